@@ -1,0 +1,121 @@
+// Interface every constitutive law of vulnus implements; used alike by MPM particles and
+// FE quadrature points. A material holds parameters only; per-point history lives in
+// PointState, owned by the caller. Units SI (m, kg, s, Pa).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace vulnus::materials
+{
+using Tensor2 = Eigen::Matrix3d;
+using Vector3 = Eigen::Vector3d;
+/// d P_iJ / d F_kL as a 9x9 matrix, row 3*i+J, column 3*k+L (P the first Piola stress).
+using Tangent = Eigen::Matrix<double, 9, 9>;
+
+/// Failure flag of a point (paper eqs. 5-6): bit 0 matrix, bit 1 fibers.
+enum FailureFlag : std::uint8_t
+{
+  intact = 0,
+  matrix_failed = 1,
+  fiber_failed = 2,
+  total_failure = 3
+};
+
+/// History of one material point. Irreversible failure flags and, for the elastic-plastic
+/// bullet, the isochoric elastic left Cauchy-Green tensor and the equivalent plastic strain.
+struct PointState
+{
+  std::uint8_t failure = intact;
+  double equivalent_plastic_strain = 0.0;
+  /// Isochoric elastic left Cauchy-Green tensor b_e~ in Voigt order xx yy zz xy yz xz.
+  std::array<double, 6> elastic_b_bar{{1.0, 1.0, 1.0, 0.0, 0.0, 0.0}};
+  /// Inverse isochoric plastic right Cauchy-Green tensor C_p~^{-1} (det 1), Voigt order as
+  /// above; elastic-plastic only. The trial state b_e~ = F~ C_p~^{-1} F~^T then needs no
+  /// previous F (it equals f b_e~_n f^T, f = F F_n^{-1}).
+  std::array<double, 6> inverse_plastic_cauchy_green{{1.0, 1.0, 1.0, 0.0, 0.0, 0.0}};
+};
+
+/// What one update returns.
+struct PointResponse
+{
+  Tensor2 cauchy_stress = Tensor2::Zero();
+  /// Stored energy per unit reference volume of the parts that have not failed (J/m^3).
+  double energy_density = 0.0;
+  /// Dilatational (P-wave) modulus of the current state in Pa, real and positive, so that
+  /// the wave speed is sqrt(modulus / current density). Zero for a rigid body.
+  double p_wave_modulus = 0.0;
+  /// Energy per unit reference volume dissipated in this update: plastic work, and the
+  /// stored energy of a phase released at the moment it fails (J/m^3).
+  double dissipated_density = 0.0;
+  /// von Mises stress over current yield stress (elastic-plastic only, else 0).
+  double von_mises_over_yield = 0.0;
+};
+
+/// Arrays (structure of arrays) of a block of points that share one material.
+/// fiber_directions may be null for materials without fibers.
+struct PointBlock
+{
+  std::size_t n_points = 0;
+  const Tensor2* deformation_gradients = nullptr;
+  const Vector3* fiber_directions = nullptr;
+  PointState* states = nullptr;
+  PointResponse* responses = nullptr;
+};
+
+class Material
+{
+public:
+  virtual ~Material() = default;
+
+  /// Registered model name, e.g. "transversely isotropic hyperelastic".
+  virtual std::string model_name() const = 0;
+
+  /// True for a body that moves rigidly: no stress update, no time-step limit.
+  virtual bool is_rigid() const { return false; }
+  /// True when the law uses a fiber direction.
+  virtual bool uses_fibers() const { return false; }
+
+  /// Update one point: F the total deformation gradient, a0 the unit reference fiber
+  /// direction (ignored without fibers). Updates the history in state.
+  virtual void update(const Tensor2& F, const Vector3& a0, PointState& state,
+                      PointResponse& response) const = 0;
+
+  /// Update a block of points: one virtual call per block, the loop inside is not virtual.
+  /// Threading is the caller's (split the block).
+  virtual void update_block(const PointBlock& block) const = 0;
+
+  /// Consistent tangent dP/dF at (F, state) without changing the state (failure frozen,
+  /// plastic flow as in the return map of an update from the stored state).
+  virtual Tangent tangent(const Tensor2& F, const Vector3& a0, const PointState& state) const = 0;
+};
+
+/// Implements update_block for a concrete law through its non-virtual update_point,
+/// so the per-point call inlines (CRTP).
+template <class Law> class MaterialBase : public Material
+{
+public:
+  void update(const Tensor2& F, const Vector3& a0, PointState& state,
+              PointResponse& response) const final
+  {
+    static_cast<const Law&>(*this).update_point(F, a0, state, response);
+  }
+
+  void update_block(const PointBlock& block) const final
+  {
+    const Law& law = static_cast<const Law&>(*this);
+    static const Vector3 no_fiber = Vector3::UnitX();
+    for (std::size_t i = 0; i < block.n_points; ++i)
+      law.update_point(block.deformation_gradients[i],
+                       block.fiber_directions ? block.fiber_directions[i] : no_fiber,
+                       block.states[i], block.responses[i]);
+  }
+};
+} // namespace vulnus::materials

@@ -1,0 +1,58 @@
+// Plain parameter structs of the material models, filled by the deck reader (app/) or by
+// tests; the defaults are the paper's values (DESIGN.md sections 2-3). SI units.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace vulnus::materials
+{
+/// Measure of the maximum shear strain compared with the matrix failure limit.
+enum class ShearMeasure
+{
+  principal_green_difference,      ///< E1 - E3 (Uintah's convention, the default)
+  half_principal_green_difference, ///< (E1 - E3) / 2, the tensorial shear strain
+  log_stretch_ratio                ///< ln(l1 / l3) of the principal stretches
+};
+
+/// Two-surface failure (paper eqs. 5-6).
+struct FailureParameters
+{
+  bool enabled = true;
+  ShearMeasure shear_measure = ShearMeasure::principal_green_difference;
+  double matrix_shear_limit = 0.5;  ///< gamma_crit, > 0
+  double fiber_stretch_limit = 1.4; ///< lambda_crit, > 1
+};
+
+/// Transversely isotropic hyperelastic tissue (Weiss 1996, uncoupled). With
+/// with_fibers = false it is the isotropic Mooney-Rivlin variant (c3 = c5 = 0, no fiber work).
+struct TissueParameters
+{
+  bool with_fibers = true;
+  double c1 = 2.1e3;             ///< Pa
+  double c2 = 0.0;               ///< Pa
+  double c3 = 0.14e3;            ///< Pa, toe-region scale
+  double c4 = 22.0;              ///< -, rate of uncrimping
+  double c5 = 100.0e3;           ///< Pa, modulus of straightened fibers
+  double lambda_star = 1.4;      ///< fiber stretch where fibers straighten, >= 1
+  double bulk_modulus = 200.0e3; ///< Pa, U(J) = K/2 (ln J)^2
+  FailureParameters failure;
+};
+
+/// Neo-Hookean elasticity with J2 plasticity and linear isotropic hardening (Simo-Hughes box 9.1).
+struct ElasticPlasticParameters
+{
+  double bulk_modulus = 117.0e9;     ///< Pa
+  double shear_modulus = 53.8e9;     ///< Pa
+  double yield_stress = 422.6e6;     ///< Pa
+  double hardening_modulus = 53.8e6; ///< Pa, linear isotropic hardening
+};
+
+/// Which registered model, and the parameters of each model (only the chosen one is used).
+struct MaterialParameters
+{
+  std::string model = "transversely isotropic hyperelastic";
+  TissueParameters tissue;
+  ElasticPlasticParameters elastic_plastic;
+};
+} // namespace vulnus::materials

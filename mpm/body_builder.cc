@@ -1,0 +1,98 @@
+// Point generation for the bodies of a scene.
+#include "mpm/body_builder.h"
+
+#include "materials/fiber_field.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace vulnus::mpm
+{
+bool body_contains(const BodyParameters& body, const Vector3& x)
+{
+  switch (body.shape)
+  {
+    case BodyShape::box:
+      return (x.array() >= body.box_min.array()).all() && (x.array() <= body.box_max.array()).all();
+    case BodyShape::sphere:
+      return (x - body.center).squaredNorm() <= body.radius * body.radius;
+    case BodyShape::cylinder:
+    {
+      const Vector3 axis = body.axis.normalized();
+      const Vector3 d = x - body.center;
+      const double along = d.dot(axis);
+      const double radial2 = (d - along * axis).squaredNorm();
+      if (along < 0.0 || along > body.length)
+        return false;
+      const double r2 = body.radius * body.radius;
+      if (body.nose == NoseShape::flat)
+        return radial2 <= r2;
+      const double shank = body.length - body.radius;
+      if (along <= shank)
+        return radial2 <= r2;
+      const double ahead = along - shank;
+      return radial2 + ahead * ahead <= r2;
+    }
+  }
+  return false;
+}
+
+void body_bounding_box(const BodyParameters& body, Vector3& lower, Vector3& upper)
+{
+  switch (body.shape)
+  {
+    case BodyShape::box:
+      lower = body.box_min;
+      upper = body.box_max;
+      return;
+    case BodyShape::sphere:
+      lower = body.center.array() - body.radius;
+      upper = body.center.array() + body.radius;
+      return;
+    case BodyShape::cylinder:
+    {
+      const Vector3 axis = body.axis.normalized();
+      const Vector3 tip = body.center + body.length * axis;
+      lower = body.center.cwiseMin(tip).array() - body.radius;
+      upper = body.center.cwiseMax(tip).array() + body.radius;
+      return;
+    }
+  }
+}
+
+void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles)
+{
+  const double h = grid.cell_size();
+  for (const BodyParameters& body : scene.bodies)
+  {
+    particles.start_body();
+    const unsigned int n = body.particles_per_cell;
+    const double spacing = h / n;
+    const double volume = spacing * spacing * spacing;
+    Vector3 lower, upper;
+    body_bounding_box(body, lower, upper);
+    std::array<long, 3> first, last;
+    for (int d = 0; d < 3; ++d)
+    {
+      first[d] = static_cast<long>(std::floor((lower[d] - grid.origin()[d]) / spacing));
+      last[d] = static_cast<long>(std::ceil((upper[d] - grid.origin()[d]) / spacing));
+    }
+    const std::size_t n_before = particles.size();
+    for (long k = first[2]; k <= last[2]; ++k)
+      for (long j = first[1]; j <= last[1]; ++j)
+        for (long i = first[0]; i <= last[0]; ++i)
+        {
+          const Vector3 x = grid.origin() + spacing * Vector3(i + 0.5, j + 0.5, k + 0.5);
+          if (!body_contains(body, x))
+            continue;
+          const Vector3 fiber = materials::fiber_direction(body.fibers, x);
+          particles.append(x, body.initial_velocity, body.density * volume, volume, fiber);
+        }
+    particles.finish_body();
+    if (particles.size() == n_before)
+      throw std::invalid_argument("Body " + body.name +
+                                  ": contains no material point; make it larger than a "
+                                  "point spacing (cell size / particles per cell)");
+  }
+}
+} // namespace vulnus::mpm

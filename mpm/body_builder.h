@@ -1,0 +1,21 @@
+// Fills bodies with material points from their geometry in the deck: box, cylinder with a
+// flat or hemispherical nose (the bullet), sphere; n x n x n points per grid cell.
+#pragma once
+
+#include "mpm/grid.h"
+#include "mpm/particles.h"
+#include "mpm/scene_parameters.h"
+
+namespace vulnus::mpm
+{
+/// True when x lies inside the body's shape.
+bool body_contains(const BodyParameters& body, const Vector3& x);
+
+/// Axis-aligned bounding box of the body's shape.
+void body_bounding_box(const BodyParameters& body, Vector3& lower, Vector3& upper);
+
+/// Appends the points of every body, one body after another, to `particles`. Points sit at
+/// the centres of the n^3 sub-cells of every grid cell whose sub-cell centre is inside the
+/// shape. Throws std::invalid_argument when a body has no point (smaller than a sub-cell).
+void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles);
+} // namespace vulnus::mpm

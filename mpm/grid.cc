@@ -1,0 +1,63 @@
+// Background grid geometry and its sparse active-node numbering.
+#include "mpm/grid.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace vulnus::mpm
+{
+Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double cell_size)
+  : domain_min(domain_min_), h(cell_size), inverse_h(1.0 / cell_size)
+{
+  if (!(cell_size > 0.0))
+    throw std::invalid_argument("Grid/Cell size: must be positive");
+  for (int d = 0; d < 3; ++d)
+  {
+    const double extent = domain_max_[d] - domain_min_[d];
+    if (!(extent > 0.0))
+      throw std::invalid_argument("Grid/Domain: maximum must exceed minimum along axis " +
+                                  std::to_string(d));
+    n_cells[d] = static_cast<int>(std::ceil(extent * inverse_h - 1e-9));
+    n_nodes_box[d] = n_cells[d] + 1 + 2 * padding;
+  }
+  domain_max = domain_min + h * Vector3(n_cells[0], n_cells[1], n_cells[2]);
+  const std::int64_t n_box = n_nodes_box[0] * n_nodes_box[1] * n_nodes_box[2];
+  if (n_box > std::int64_t(1) << 31)
+    throw std::invalid_argument("Grid: more than 2^31 nodes in the grid box; use larger cells");
+  slot_of_key.assign(static_cast<std::size_t>(n_box), -1);
+}
+
+std::array<int, 3> Grid::node_ijk(const std::int64_t key) const
+{
+  const int i = static_cast<int>(key % n_nodes_box[0]);
+  const int j = static_cast<int>((key / n_nodes_box[0]) % n_nodes_box[1]);
+  const int k = static_cast<int>(key / (n_nodes_box[0] * n_nodes_box[1]));
+  return {{i - padding, j - padding, k - padding}};
+}
+
+Vector3 Grid::node_position(const std::int64_t key) const
+{
+  const auto ijk = node_ijk(key);
+  return domain_min + h * Vector3(ijk[0], ijk[1], ijk[2]);
+}
+
+std::size_t Grid::number_active_nodes()
+{
+  active.clear();
+  const std::int64_t n_box = static_cast<std::int64_t>(slot_of_key.size());
+  for (std::int64_t key = 0; key < n_box; ++key)
+    if (slot_of_key[key] == 0)
+      active.push_back(key);
+  for (std::size_t s = 0; s < active.size(); ++s)
+    slot_of_key[active[s]] = static_cast<std::int32_t>(s);
+  return active.size();
+}
+
+void Grid::clear_active_nodes()
+{
+  for (const auto key : active)
+    slot_of_key[key] = -1;
+  active.clear();
+}
+} // namespace vulnus::mpm

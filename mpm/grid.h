@@ -1,0 +1,75 @@
+// Structured background grid of cubic cells with a sparse set of active nodes: node data is
+// stored only for nodes that receive mass this step, found through a dense 4-byte lookup
+// table over the padded box (so node storage and node loops follow the particles).
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace vulnus::mpm
+{
+using Vector3 = Eigen::Vector3d;
+
+class Grid
+{
+public:
+  /// Nodes exist from index -padding to n_cells + padding along each axis.
+  static constexpr int padding = 2;
+
+  Grid() = default;
+  Grid(const Vector3& domain_min, const Vector3& domain_max, double cell_size);
+
+  double cell_size() const { return h; }
+  double inverse_cell_size() const { return inverse_h; }
+  const Vector3& origin() const { return domain_min; }
+  const Vector3& upper_corner() const { return domain_max; }
+  const std::array<int, 3>& cells() const { return n_cells; }
+
+  /// Position in cell units relative to the domain minimum.
+  Vector3 to_cell_units(const Vector3& x) const { return (x - domain_min) * inverse_h; }
+
+  /// True when node (i, j, k) lies inside the padded node box.
+  bool has_node(const int i, const int j, const int k) const
+  {
+    return i >= -padding && j >= -padding && k >= -padding && i <= n_cells[0] + padding &&
+           j <= n_cells[1] + padding && k <= n_cells[2] + padding;
+  }
+
+  std::int64_t node_key(const int i, const int j, const int k) const
+  {
+    return (i + padding) + n_nodes_box[0] * (std::int64_t(j + padding) +
+                                             n_nodes_box[1] * std::int64_t(k + padding));
+  }
+  std::array<int, 3> node_ijk(std::int64_t key) const;
+  Vector3 node_position(std::int64_t key) const;
+
+  /// Sparse active set: mark keys (thread-safe, idempotent), then number them.
+  void mark(std::int64_t key)
+  {
+    __atomic_store_n(&slot_of_key[key], 0, __ATOMIC_RELAXED);
+  }
+  /// Numbers the marked nodes in key order and returns their count.
+  std::size_t number_active_nodes();
+  /// Unmarks every active node (cost proportional to the active set).
+  void clear_active_nodes();
+
+  /// Slot of an active node, or -1.
+  std::int32_t slot(const std::int64_t key) const { return slot_of_key[key]; }
+  const std::vector<std::int64_t>& active_keys() const { return active; }
+  std::size_t n_active() const { return active.size(); }
+  std::size_t n_box_nodes() const { return slot_of_key.size(); }
+
+private:
+  Vector3 domain_min = Vector3::Zero();
+  Vector3 domain_max = Vector3::Zero();
+  double h = 1.0;
+  double inverse_h = 1.0;
+  std::array<int, 3> n_cells{{0, 0, 0}};
+  std::array<std::int64_t, 3> n_nodes_box{{0, 0, 0}};
+  std::vector<std::int32_t> slot_of_key;
+  std::vector<std::int64_t> active;
+};
+} // namespace vulnus::mpm

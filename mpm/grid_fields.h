@@ -1,0 +1,45 @@
+// Per active node and per body: the fields the transfers accumulate (mass, momentum, internal
+// force, mass gradient for contact normals) and the velocities the grid update produces.
+// Entry of node slot s and body b is s * n_bodies + b.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace vulnus::mpm
+{
+using Vector3 = Eigen::Vector3d;
+
+struct NodeBodyData
+{
+  double mass = 0.0;
+  Vector3 momentum = Vector3::Zero();
+  Vector3 force = Vector3::Zero();
+  Vector3 mass_gradient = Vector3::Zero();
+
+  void add(const NodeBodyData& other)
+  {
+    mass += other.mass;
+    momentum += other.momentum;
+    force += other.force;
+    mass_gradient += other.mass_gradient;
+  }
+};
+
+struct GridFields
+{
+  std::size_t n_bodies = 1;
+  std::vector<NodeBodyData> data;
+  std::vector<Vector3> velocity;     ///< v^n, projected from the points
+  std::vector<Vector3> velocity_new; ///< v^(n+1) after forces, contact and boundary conditions
+
+  void resize(std::size_t n_active_nodes)
+  {
+    const std::size_t n = n_active_nodes * n_bodies;
+    data.assign(n, NodeBodyData());
+    velocity.resize(n);
+    velocity_new.resize(n);
+  }
+};
+} // namespace vulnus::mpm

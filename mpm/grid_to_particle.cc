@@ -1,0 +1,98 @@
+// Gather from the grid to the points: kinematics and deformation gradients.
+#include "mpm/grid_to_particle.h"
+
+#include "mpm/stencil.h"
+
+#include <cmath>
+
+namespace vulnus::mpm
+{
+void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
+                             const KinematicsSettings& s, const GridFields& fields,
+                             Particles& particles, std::vector<Vector3>& displacement)
+{
+  displacement.resize(particles.size());
+  const std::size_t n_bodies = particles.n_bodies();
+  const double dt = s.time_step;
+  const double flip = s.flip_fraction;
+  with_shape(transfer.shape, [&](auto shape_constant) {
+    constexpr ShapeFunction shape = decltype(shape_constant)::value;
+    for (std::size_t b = 0; b < n_bodies; ++b)
+    {
+      const long begin = particles.begin_of(b), end = particles.end_of(b);
+      if (s.body_is_rigid[b])
+      {
+        const Vector3 v = s.rigid_velocity[b];
+#pragma omp parallel for schedule(static)
+        for (long p = begin; p < end; ++p)
+        {
+          particles.velocity[p] = v;
+          displacement[p] = dt * v;
+        }
+        continue;
+      }
+      const double lp = transfer.half_size_cells[b];
+#pragma omp parallel for schedule(static)
+      for (long p = begin; p < end; ++p)
+      {
+        Vector3 v_pic = Vector3::Zero();
+        Vector3 dv = Vector3::Zero();
+        for_each_node<shape>(grid, lp, particles.position[p],
+                             [&](const std::int64_t key, const double w, const Vector3&) {
+                               const std::size_t e = grid.slot(key) * n_bodies + b;
+                               v_pic += w * fields.velocity_new[e];
+                               dv += w * (fields.velocity_new[e] - fields.velocity[e]);
+                             });
+        displacement[p] = dt * v_pic;
+        particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
+      }
+    }
+  });
+}
+
+void move_points(const std::vector<Vector3>& displacement, Particles& particles)
+{
+  const long n = static_cast<long>(particles.size());
+#pragma omp parallel for schedule(static)
+  for (long p = 0; p < n; ++p)
+    particles.position[p] += displacement[p];
+}
+
+void update_deformation_gradients(const Grid& grid, const TransferSettings& transfer,
+                                  const KinematicsSettings& s, const GridFields& fields,
+                                  Particles& particles, std::vector<double>& volumetric_rate)
+{
+  const std::size_t n_bodies = particles.n_bodies();
+  const double dt = s.time_step;
+  volumetric_rate.resize(particles.size());
+  with_shape(transfer.shape, [&](auto shape_constant) {
+    constexpr ShapeFunction shape = decltype(shape_constant)::value;
+    for (std::size_t b = 0; b < n_bodies; ++b)
+    {
+      const long begin = particles.begin_of(b), end = particles.end_of(b);
+      if (s.body_is_rigid[b])
+      {
+        for (long p = begin; p < end; ++p)
+          volumetric_rate[p] = 0.0;
+        continue;
+      }
+      const double lp = transfer.half_size_cells[b];
+#pragma omp parallel for schedule(static)
+      for (long p = begin; p < end; ++p)
+      {
+        Tensor2 L = Tensor2::Zero();
+        for_each_node<shape>(grid, lp, particles.position[p],
+                             [&](const std::int64_t key, double, const Vector3& grad_w) {
+                               L.noalias() += fields.velocity_new[grid.slot(key) * n_bodies + b] *
+                                              grad_w.transpose();
+                             });
+        Tensor2& F = particles.deformation_gradient[p];
+        const double J_old = F.determinant();
+        F = (Tensor2::Identity() + dt * L) * F;
+        const double J_new = F.determinant();
+        volumetric_rate[p] = (J_new > 0.0 && J_old > 0.0) ? std::log(J_new / J_old) / dt : L.trace();
+      }
+    }
+  });
+}
+} // namespace vulnus::mpm

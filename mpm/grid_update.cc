@@ -1,0 +1,207 @@
+// Nodal velocity update, multi-velocity-field frictional contact, boundary conditions.
+#include "mpm/grid_update.h"
+
+#include <omp.h>
+
+#include <cmath>
+
+namespace vulnus::mpm
+{
+void apply_face_conditions(const Grid& grid, const FaceConditions& faces, const std::int64_t key,
+                           Vector3& velocity)
+{
+  const auto ijk = grid.node_ijk(key);
+  const auto& n = grid.cells();
+  for (int d = 0; d < 3; ++d)
+  {
+    const FaceCondition lower = faces[2 * d], upper = faces[2 * d + 1];
+    const bool on_lower = ijk[d] <= 0, on_upper = ijk[d] >= n[d];
+    const FaceCondition c = on_lower ? lower : (on_upper ? upper : FaceCondition::free);
+    if (c == FaceCondition::fixed)
+    {
+      velocity.setZero();
+      return;
+    }
+    if (c == FaceCondition::roller)
+      velocity[d] = 0.0;
+  }
+}
+
+namespace
+{
+/// Corrects the velocities of the bodies meeting at one node. `v` holds the trial
+/// velocities of the n_bodies entries; returns the kinetic energy removed.
+double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Vector3* v,
+                       const std::size_t n_bodies, Vector3* contact_force_local)
+{
+  // Centre-of-mass velocity, or the rigid body's velocity when one is present.
+  double total_mass = 0.0;
+  Vector3 total_momentum = Vector3::Zero();
+  int rigid = -1;
+  for (std::size_t b = 0; b < n_bodies; ++b)
+  {
+    if (data[b].mass <= s.mass_tolerance)
+      continue;
+    if (s.body_is_rigid[b])
+      rigid = static_cast<int>(b);
+    total_mass += data[b].mass;
+    total_momentum += data[b].mass * v[b];
+  }
+  const Vector3 v_cm = rigid >= 0 ? s.rigid_velocity[rigid] : Vector3(total_momentum / total_mass);
+
+  // Outward unit normals: for two bodies one shared direction from the mass gradients.
+  std::size_t present[2] = {0, 0};
+  std::size_t n_present = 0;
+  for (std::size_t b = 0; b < n_bodies; ++b)
+    if (data[b].mass > s.mass_tolerance)
+    {
+      if (n_present < 2)
+        present[n_present] = b;
+      ++n_present;
+    }
+  const bool pair = n_present == 2;
+  Vector3 pair_normal = Vector3::Zero();
+  if (pair)
+  {
+    // sum_p m_p grad N_i(x_p) points from a body's points towards the node: outward. A rigid
+    // body's surface is the better-defined one, so its normal alone is used when present.
+    Vector3 g = data[present[0]].mass_gradient - data[present[1]].mass_gradient;
+    if (rigid == static_cast<int>(present[0]))
+      g = data[present[0]].mass_gradient;
+    else if (rigid == static_cast<int>(present[1]))
+      g = -data[present[1]].mass_gradient;
+    const double norm = g.norm();
+    if (norm > 0.0)
+      pair_normal = g / norm; // outward normal of the first body
+  }
+
+  double dissipated = 0.0;
+  const double dt = s.time_step;
+  for (std::size_t b = 0; b < n_bodies; ++b)
+  {
+    const double m = data[b].mass;
+    if (m <= s.mass_tolerance || (rigid >= 0 && static_cast<int>(b) == rigid))
+      continue;
+    Vector3 normal;
+    if (pair)
+      normal = b == present[0] ? pair_normal : Vector3(-pair_normal);
+    else
+    {
+      const double norm = data[b].mass_gradient.norm();
+      normal = norm > 0.0 ? Vector3(data[b].mass_gradient / norm) : Vector3::Zero();
+    }
+    const Vector3 before = v[b];
+    const Vector3 relative = v[b] - v_cm;
+    if (s.friction_coefficient < 0.0)
+      v[b] = v_cm;
+    else
+    {
+      const double approach = relative.dot(normal);
+      if (approach <= 0.0)
+        continue; // separating: bodies move independently
+      const Vector3 tangential = relative - approach * normal;
+      const double slip = tangential.norm();
+      const double friction_limit = s.friction_coefficient * approach;
+      if (slip <= friction_limit)
+        v[b] = v_cm; // sticking
+      else
+        v[b] -= approach * normal + friction_limit * (tangential / slip);
+    }
+    const Vector3 force = m * (v[b] - before) / dt;
+    contact_force_local[b] += force;
+    if (rigid >= 0)
+      contact_force_local[rigid] -= force;
+    // Kinetic energy lost relative to the centre of mass (equals the total loss because the
+    // corrections conserve momentum, and counts work done on a rigid body as a transfer).
+    dissipated += 0.5 * m * ((before - v_cm).squaredNorm() - (v[b] - v_cm).squaredNorm());
+  }
+  return dissipated;
+}
+} // namespace
+
+void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fields,
+                 GridUpdateResult& result)
+{
+  const std::size_t n_bodies = fields.n_bodies;
+  const long n_nodes = static_cast<long>(grid.n_active());
+  const double dt = s.time_step;
+  result.contact_force.assign(n_bodies, Vector3::Zero());
+  result.contact_dissipation = 0.0;
+  result.n_contact_nodes = 0;
+  double dissipation = 0.0;
+  std::size_t n_contact_nodes = 0;
+
+#pragma omp parallel reduction(+ : dissipation, n_contact_nodes)
+  {
+    std::vector<Vector3> force_local(n_bodies, Vector3::Zero());
+#pragma omp for schedule(static)
+    for (long node = 0; node < n_nodes; ++node)
+    {
+      const std::int64_t key = grid.active_keys()[node];
+      NodeBodyData* data = &fields.data[node * n_bodies];
+      Vector3* v = &fields.velocity[node * n_bodies];
+      Vector3* v_new = &fields.velocity_new[node * n_bodies];
+      std::size_t n_with_mass = 0;
+      for (std::size_t b = 0; b < n_bodies; ++b)
+      {
+        if (data[b].mass <= s.mass_tolerance)
+        {
+          v[b].setZero();
+          v_new[b].setZero();
+          continue;
+        }
+        ++n_with_mass;
+        if (s.body_is_rigid[b])
+        {
+          v[b] = s.rigid_velocity[b];
+          v_new[b] = s.rigid_velocity[b];
+          continue;
+        }
+        v[b] = data[b].momentum / data[b].mass;
+        v_new[b] = v[b] + dt * (data[b].force / data[b].mass + s.gravity);
+      }
+      if (s.contact && n_with_mass > 1)
+      {
+        ++n_contact_nodes;
+        dissipation += resolve_contact(s, data, v_new, n_bodies, force_local.data());
+      }
+      for (std::size_t b = 0; b < n_bodies; ++b)
+        if (data[b].mass > s.mass_tolerance && !s.body_is_rigid[b])
+          apply_face_conditions(grid, s.faces, key, v_new[b]); // v^n stays: FLIP sees the stop
+    }
+#pragma omp critical
+    for (std::size_t b = 0; b < n_bodies; ++b)
+      result.contact_force[b] += force_local[b];
+  }
+  result.contact_dissipation = dissipation;
+  result.n_contact_nodes = n_contact_nodes;
+}
+
+void velocities_from_momenta(const Grid& grid, const GridUpdateSettings& s, GridFields& fields)
+{
+  const std::size_t n_bodies = fields.n_bodies;
+  const long n_nodes = static_cast<long>(grid.n_active());
+#pragma omp parallel for schedule(static)
+  for (long node = 0; node < n_nodes; ++node)
+  {
+    const std::int64_t key = grid.active_keys()[node];
+    for (std::size_t b = 0; b < n_bodies; ++b)
+    {
+      const std::size_t e = node * n_bodies + b;
+      const NodeBodyData& d = fields.data[e];
+      if (d.mass <= s.mass_tolerance)
+      {
+        fields.velocity_new[e].setZero();
+        continue;
+      }
+      if (s.body_is_rigid[b])
+      {
+        fields.velocity_new[e] = s.rigid_velocity[b];
+        continue;
+      }
+      fields.velocity_new[e] = d.momentum / d.mass;
+      apply_face_conditions(grid, s.faces, key, fields.velocity_new[e]);
+    }
+  }
+}
+} // namespace vulnus::mpm

@@ -1,0 +1,46 @@
+// Grid update stage: nodal velocities before and after the internal forces, multi-velocity
+// field contact between bodies (Bardenhagen et al. 2000, Coulomb friction), rigid bodies, and
+// the face boundary conditions of the domain.
+#pragma once
+
+#include "mpm/grid.h"
+#include "mpm/grid_fields.h"
+#include "mpm/scene_parameters.h"
+
+#include <vector>
+
+namespace vulnus::mpm
+{
+struct GridUpdateSettings
+{
+  double time_step = 0.0;
+  Vector3 gravity = Vector3::Zero();
+  FaceConditions faces{};
+  bool contact = false;
+  /// Coulomb coefficient; negative: no-slip (all bodies share the centre-of-mass velocity).
+  double friction_coefficient = 0.0;
+  std::vector<char> body_is_rigid;     ///< per body
+  std::vector<Vector3> rigid_velocity; ///< per body, used when rigid
+  double mass_tolerance = 0.0;         ///< node-body entries lighter than this are ignored
+};
+
+struct GridUpdateResult
+{
+  std::vector<Vector3> contact_force; ///< per body, force the others exert on it (N)
+  double contact_dissipation = 0.0;   ///< kinetic energy removed by contact this step (J)
+  std::size_t n_contact_nodes = 0;    ///< nodes where two or more bodies met
+};
+
+/// Computes fields.velocity (v^n) and fields.velocity_new (v^(n+1)) of every node and body.
+void update_grid(const Grid& grid, const GridUpdateSettings& settings, GridFields& fields,
+                 GridUpdateResult& result);
+
+/// Applies the domain face conditions to a nodal velocity of node `key`.
+void apply_face_conditions(const Grid& grid, const FaceConditions& faces, std::int64_t key,
+                           Vector3& velocity);
+
+/// Re-derives fields.velocity_new from the momenta in fields.data (MUSL re-projection),
+/// with the face conditions and rigid velocities applied.
+void velocities_from_momenta(const Grid& grid, const GridUpdateSettings& settings,
+                             GridFields& fields);
+} // namespace vulnus::mpm

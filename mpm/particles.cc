@@ -1,0 +1,66 @@
+// Particle arrays: appending and reordering.
+#include "mpm/particles.h"
+
+namespace vulnus::mpm
+{
+void Particles::reserve(const std::size_t n)
+{
+  position.reserve(n);
+  velocity.reserve(n);
+  deformation_gradient.reserve(n);
+  stress.reserve(n);
+  mass.reserve(n);
+  reference_volume.reserve(n);
+  fiber_direction.reserve(n);
+  state.reserve(n);
+  energy_density.reserve(n);
+  dissipated_density.reserve(n);
+  wave_speed.reserve(n);
+  id.reserve(n);
+}
+
+void Particles::append(const Vector3& x, const Vector3& v, const double m, const double volume,
+                       const Vector3& fiber)
+{
+  id.push_back(static_cast<std::uint32_t>(position.size()));
+  position.push_back(x);
+  velocity.push_back(v);
+  deformation_gradient.push_back(Tensor2::Identity());
+  stress.push_back(Tensor2::Zero());
+  mass.push_back(m);
+  reference_volume.push_back(volume);
+  fiber_direction.push_back(fiber);
+  state.emplace_back();
+  energy_density.push_back(0.0);
+  dissipated_density.push_back(0.0);
+  wave_speed.push_back(0.0);
+}
+
+namespace
+{
+template <class T>
+void apply_order(std::vector<T>& values, const std::vector<std::size_t>& order)
+{
+  std::vector<T> reordered(values.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    reordered[i] = values[order[i]];
+  values.swap(reordered);
+}
+} // namespace
+
+void Particles::permute(const std::vector<std::size_t>& order)
+{
+  apply_order(position, order);
+  apply_order(velocity, order);
+  apply_order(deformation_gradient, order);
+  apply_order(stress, order);
+  apply_order(mass, order);
+  apply_order(reference_volume, order);
+  apply_order(fiber_direction, order);
+  apply_order(state, order);
+  apply_order(energy_density, order);
+  apply_order(dissipated_density, order);
+  apply_order(wave_speed, order);
+  apply_order(id, order);
+}
+} // namespace vulnus::mpm

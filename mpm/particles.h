@@ -1,0 +1,53 @@
+// Material points stored as arrays (structure of arrays). Points of one body are kept
+// contiguous (body_begin) so material updates dispatch once per body; within a body they are
+// sorted by grid cell now and then for cache locality.
+#pragma once
+
+#include "materials/material.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace vulnus::mpm
+{
+using Vector3 = Eigen::Vector3d;
+using Tensor2 = Eigen::Matrix3d;
+
+struct Particles
+{
+  std::vector<Vector3> position;
+  std::vector<Vector3> velocity;
+  std::vector<Tensor2> deformation_gradient;
+  std::vector<Tensor2> stress; ///< Cauchy stress, Pa
+  std::vector<double> mass;
+  std::vector<double> reference_volume;
+  std::vector<Vector3> fiber_direction; ///< reference unit fiber a0 (bodies with fibers)
+  std::vector<materials::PointState> state;
+  std::vector<double> energy_density;      ///< J per reference m^3, unfailed parts
+  std::vector<double> dissipated_density;  ///< accumulated J per reference m^3
+  std::vector<double> wave_speed;          ///< m/s, from the last stress update
+  std::vector<std::uint32_t> id;           ///< stable identifier, survives sorting
+
+  /// Body b owns the index range [body_begin[b], body_begin[b+1]).
+  std::vector<std::size_t> body_begin{0};
+
+  std::size_t size() const { return position.size(); }
+  std::size_t n_bodies() const { return body_begin.size() - 1; }
+  std::size_t begin_of(std::size_t b) const { return body_begin[b]; }
+  std::size_t end_of(std::size_t b) const { return body_begin[b + 1]; }
+
+  void reserve(std::size_t n);
+  /// Appends one point to the last body (call start_body first).
+  void append(const Vector3& x, const Vector3& v, double m, double volume,
+              const Vector3& fiber);
+  /// Opens a new body; points appended from now on belong to it.
+  void start_body() { body_begin.push_back(size()); }
+  /// Closes the last body (records its end).
+  void finish_body() { body_begin.back() = size(); }
+
+  /// Reorders every array by `order` (new index i takes old index order[i]).
+  void permute(const std::vector<std::size_t>& order);
+};
+} // namespace vulnus::mpm

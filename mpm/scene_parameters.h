@@ -1,0 +1,118 @@
+// Plain structs describing an MPM scene (grid, bodies, boundaries, contact, time stepping),
+// built by the deck reader in app/ and consumed by the MPM solver. SI units.
+#pragma once
+
+#include "materials/fiber_field.h"
+#include "materials/material_parameters.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace vulnus::mpm
+{
+using Vector3 = Eigen::Vector3d;
+
+enum class ShapeFunction
+{
+  linear,
+  gimp
+};
+
+enum class UpdateScheme
+{
+  usl, ///< update stress last
+  musl ///< modified update stress last (velocities re-mapped before the stress update)
+};
+
+enum class FaceCondition
+{
+  free,
+  fixed,
+  roller ///< normal velocity zero, tangential free
+};
+
+/// Faces in the order x-, x+, y-, y+, z-, z+.
+using FaceConditions = std::array<FaceCondition, 6>;
+
+enum class BodyShape
+{
+  box,
+  cylinder, ///< bullet: a cylinder with a nose along an axis
+  sphere
+};
+
+enum class NoseShape
+{
+  flat,
+  hemispherical
+};
+
+enum class RigidMotion
+{
+  prescribed, ///< keeps its initial velocity
+  free        ///< rigid body driven by the contact force
+};
+
+struct BodyParameters
+{
+  std::string name;
+  std::string material; ///< name of an entry of SceneParameters::materials
+  BodyShape shape = BodyShape::box;
+  Vector3 box_min = Vector3::Zero(); ///< box
+  Vector3 box_max = Vector3::Zero();
+  Vector3 center = Vector3::Zero(); ///< sphere centre; cylinder: centre of the tail face
+  double radius = 0.0;              ///< sphere and cylinder
+  double length = 0.0;              ///< cylinder overall length including the nose
+  Vector3 axis = Vector3::UnitY();  ///< cylinder axis, unit, pointing from tail to nose
+  NoseShape nose = NoseShape::hemispherical;
+  double density = 1060.0;              ///< kg/m^3
+  Vector3 initial_velocity = Vector3::Zero(); ///< m/s
+  unsigned int particles_per_cell = 2;  ///< per axis
+  RigidMotion rigid_motion = RigidMotion::free; ///< used when the material is rigid
+  materials::FiberFieldParameters fibers;       ///< used when the material has fibers
+  bool is_projectile = false; ///< the body whose position/velocity the history reports
+};
+
+struct NamedMaterial
+{
+  std::string name;
+  materials::MaterialParameters parameters;
+};
+
+struct ContactParameters
+{
+  bool enabled = true;
+  double friction_coefficient = 0.08; ///< Coulomb; negative means no-slip (single velocity field)
+};
+
+struct SceneParameters
+{
+  // Background grid: a structured grid of cubic cells covering [domain_min, domain_max].
+  Vector3 domain_min = Vector3::Zero();
+  Vector3 domain_max = Vector3::Zero();
+  double cell_size = 1.0e-3;
+  ShapeFunction shape_function = ShapeFunction::linear;
+  UpdateScheme update_scheme = UpdateScheme::musl;
+  FaceConditions domain_faces{{FaceCondition::free, FaceCondition::free, FaceCondition::free,
+                               FaceCondition::free, FaceCondition::free, FaceCondition::free}};
+
+  std::vector<NamedMaterial> materials;
+  std::vector<BodyParameters> bodies;
+  ContactParameters contact;
+
+  Vector3 gravity = Vector3::Zero(); ///< body force per unit mass, m/s^2
+  double cfl = 0.4;
+  double flip_fraction = 1.0; ///< 1 pure FLIP, 0 pure PIC velocity update
+  double end_time = 1.0e-3;           ///< s
+  double artificial_viscosity_linear = 0.0;    ///< bulk viscosity coefficients (0 = off)
+  double artificial_viscosity_quadratic = 0.0;
+  double max_time_step = 1.0;          ///< s, cap
+  double min_time_step = 1.0e-12;      ///< s, floor: below it the run stops as a blow-up
+  unsigned int sort_interval = 50;     ///< steps between re-sorting particles by cell
+  unsigned int n_threads = 0;          ///< 0: all available
+  bool stop_when_projectile_exits = true;
+};
+} // namespace vulnus::mpm

@@ -1,0 +1,85 @@
+// Separable MPM shape functions evaluated per particle: linear (tent, 2 nodes per axis) and
+// uGIMP (generalized interpolation with a constant particle half-size, 3 nodes per axis).
+// Header-only so the transfer kernels inline them.
+#pragma once
+
+#include "mpm/scene_parameters.h"
+
+#include <array>
+#include <cmath>
+
+namespace vulnus::mpm
+{
+/// Weights and derivatives of the nodes a particle touches along one axis.
+struct AxisWeights
+{
+  int first_node = 0; ///< grid index of the first node
+  std::array<double, 3> value{};
+  std::array<double, 3> derivative{}; ///< d value / d x_particle
+};
+
+/// Linear tent function: s = (x - x_min) / h, nodes floor(s) and floor(s) + 1.
+inline void linear_axis_weights(const double s, const double inverse_h, AxisWeights& w)
+{
+  const double base = std::floor(s);
+  const double xi = s - base;
+  w.first_node = static_cast<int>(base);
+  w.value[0] = 1.0 - xi;
+  w.value[1] = xi;
+  w.value[2] = 0.0;
+  w.derivative[0] = -inverse_h;
+  w.derivative[1] = inverse_h;
+  w.derivative[2] = 0.0;
+}
+
+/// uGIMP 1D weight of a node at signed distance r = x_p - x_i (in cells), particle
+/// half-size lp (in cells, lp <= 1/2): Bardenhagen & Kober 2004, eq. for the
+/// convolution of the tent function with a box of width 2 lp.
+inline void gimp_node_weight(const double r, const double lp, double& value, double& slope)
+{
+  const double a = std::abs(r);
+  const double sign = r < 0.0 ? -1.0 : 1.0;
+  if (a < lp)
+  {
+    value = 1.0 - (r * r + lp * lp) / (2.0 * lp);
+    slope = -r / lp;
+  }
+  else if (a < 1.0 - lp)
+  {
+    value = 1.0 - a;
+    slope = -sign;
+  }
+  else if (a < 1.0 + lp)
+  {
+    const double d = 1.0 + lp - a;
+    value = d * d / (4.0 * lp);
+    slope = -sign * d / (2.0 * lp);
+  }
+  else
+  {
+    value = 0.0;
+    slope = 0.0;
+  }
+}
+
+/// GIMP along one axis: s = (x - x_min) / h, lp particle half-size in cells.
+inline void gimp_axis_weights(const double s, const double lp, const double inverse_h,
+                              AxisWeights& w)
+{
+  const int first = static_cast<int>(std::floor(s - lp));
+  w.first_node = first;
+  for (int k = 0; k < 3; ++k)
+  {
+    double value, slope;
+    gimp_node_weight(s - (first + k), lp, value, slope);
+    w.value[k] = value;
+    w.derivative[k] = slope * inverse_h;
+  }
+}
+
+/// Number of nodes per axis touched by a particle.
+inline constexpr int nodes_per_axis(const ShapeFunction shape)
+{
+  return shape == ShapeFunction::linear ? 2 : 3;
+}
+} // namespace vulnus::mpm

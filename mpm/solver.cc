@@ -1,0 +1,291 @@
+// Orchestration of the MPM time step and its blow-up checks.
+#include "mpm/solver.h"
+
+#include "materials/material_registry.h"
+#include "mpm/body_builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+namespace vulnus::mpm
+{
+Solver::Solver(const SceneParameters& scene)
+  : parameters(scene), grid(scene.domain_min, scene.domain_max, scene.cell_size)
+{
+  const std::size_t n_bodies = scene.bodies.size();
+  if (n_bodies == 0)
+    throw std::invalid_argument("Scene/Bodies: no body; name at least one");
+
+  // One material object per named material, shared by the bodies that use it.
+  std::vector<std::string> material_names;
+  for (const NamedMaterial& m : scene.materials)
+  {
+    material_names.push_back(m.name);
+    owned_materials.push_back(materials::create_material(m.parameters));
+  }
+  for (const BodyParameters& body : scene.bodies)
+  {
+    const auto it = std::find(material_names.begin(), material_names.end(), body.material);
+    if (it == material_names.end())
+      throw std::invalid_argument("Body " + body.name + "/Material: unknown material '" +
+                                  body.material + "'; use one of the names in Scene/Materials");
+    materials_of_body.push_back(owned_materials[it - material_names.begin()].get());
+  }
+
+  build_bodies(scene, grid, particles);
+
+  transfer.shape = scene.shape_function;
+  for (const BodyParameters& body : scene.bodies)
+    transfer.half_size_cells.push_back(0.5 / body.particles_per_cell);
+  contact_active = scene.contact.enabled && n_bodies > 1;
+  transfer.contact_normals = contact_active && scene.contact.friction_coefficient >= 0.0;
+
+  body_mass.assign(n_bodies, 0.0);
+  for (std::size_t b = 0; b < n_bodies; ++b)
+    for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
+      body_mass[b] += particles.mass[p];
+
+  grid_settings.faces = scene.domain_faces;
+  grid_settings.gravity = scene.gravity;
+  grid_settings.contact = contact_active;
+  grid_settings.friction_coefficient = scene.contact.friction_coefficient;
+  // Any node with mass gets a velocity: p / m is a weighted mean of point velocities even
+  // where m is tiny, and zeroing light nodes breaks exact translation.
+  grid_settings.mass_tolerance = 0.0;
+  for (std::size_t b = 0; b < n_bodies; ++b)
+  {
+    grid_settings.body_is_rigid.push_back(materials_of_body[b]->is_rigid());
+    grid_settings.rigid_velocity.push_back(scene.bodies[b].initial_velocity);
+  }
+  kinematics.flip_fraction = scene.flip_fraction;
+  kinematics.body_is_rigid = grid_settings.body_is_rigid;
+  kinematics.rigid_velocity = grid_settings.rigid_velocity;
+
+  stress_settings.cell_size = scene.cell_size;
+  stress_settings.viscosity_linear = scene.artificial_viscosity_linear;
+  stress_settings.viscosity_quadratic = scene.artificial_viscosity_quadratic;
+  stress_settings.body_material = materials_of_body;
+  for (const BodyParameters& body : scene.bodies)
+    stress_settings.body_density.push_back(body.density);
+  peak_yield_ratio.assign(n_bodies, 0.0);
+
+  for (std::size_t b = 0; b < n_bodies; ++b)
+    if (scene.bodies[b].is_projectile)
+      projectile_body = static_cast<int>(b);
+  if (projectile_body >= 0)
+  {
+    const Vector3 v0 = scene.bodies[projectile_body].initial_velocity;
+    flight_axis = v0.norm() > 0 ? Vector3(v0.normalized()) : Vector3::UnitY();
+    exit_plane = -std::numeric_limits<double>::max();
+    for (std::size_t b = 0; b < n_bodies; ++b)
+      if (static_cast<int>(b) != projectile_body)
+        for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
+          exit_plane = std::max(exit_plane, particles.position[p].dot(flight_axis));
+  }
+
+  // Initial stresses and wave speeds (non-zero when a body starts deformed is not supported:
+  // F = I, so this gives the small-strain moduli for the first CFL step).
+  volumetric_rate.assign(particles.size(), 0.0);
+  stress_settings.time_step = 0.0;
+  update_stresses(stress_settings, volumetric_rate, particles, stress_result);
+  sort_points();
+  const SceneDiagnostics d = compute_diagnostics(particles, flight_axis, parameters.gravity);
+  energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
+  check_state();
+}
+
+void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& field)
+{
+  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+    if (!grid_settings.body_is_rigid[b])
+      for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
+        particles.velocity[p] = field(particles.position[p]);
+  const SceneDiagnostics d = diagnostics();
+  energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
+}
+
+double Solver::stable_time_step() const
+{
+  double fastest = 0.0;
+  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+  {
+    const long begin = particles.begin_of(b), end = particles.end_of(b);
+    if (grid_settings.body_is_rigid[b])
+    {
+      fastest = std::max(fastest, grid_settings.rigid_velocity[b].norm());
+      continue;
+    }
+    double body_fastest = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : body_fastest)
+    for (long p = begin; p < end; ++p)
+      body_fastest = std::max(body_fastest, particles.wave_speed[p] + particles.velocity[p].norm());
+    fastest = std::max(fastest, body_fastest);
+  }
+  const double limit = fastest > 0.0 ? parameters.cfl * parameters.cell_size / fastest
+                                     : parameters.max_time_step;
+  return std::min(limit, parameters.max_time_step);
+}
+
+void Solver::advance()
+{
+  const double stable = stable_time_step();
+  if (!(stable >= parameters.min_time_step))
+  {
+    std::ostringstream message;
+    message << "time step collapsed at step " << n_steps << ", t = " << current_time
+            << " s: CFL step " << stable << " s is below Time/Minimum time step "
+            << parameters.min_time_step
+            << " s; likely cause: a point moving or vibrating far too fast (CFL too high, "
+               "bulk modulus too large for the cell size, or an unstable contact)";
+    throw BlowUp(message.str());
+  }
+  time_step = std::min(stable, parameters.end_time - current_time);
+  if (time_step <= 0.0)
+    return;
+  const double dt = time_step;
+
+  mark_active_nodes(particles, transfer, grid);
+  particles_to_grid(particles, grid, transfer, true, buffers, fields);
+
+  grid_settings.time_step = dt;
+  update_grid(grid, grid_settings, fields, grid_result);
+  accumulated_contact_dissipation += grid_result.contact_dissipation;
+
+  kinematics.time_step = dt;
+  update_point_kinematics(grid, transfer, kinematics, fields, particles, displacement);
+  if (parameters.update_scheme == UpdateScheme::musl)
+  {
+    particles_to_grid(particles, grid, transfer, false, buffers, fields);
+    velocities_from_momenta(grid, grid_settings, fields);
+  }
+  update_deformation_gradients(grid, transfer, kinematics, fields, particles, volumetric_rate);
+  move_points(displacement, particles);
+
+  stress_settings.time_step = dt;
+  update_stresses(stress_settings, volumetric_rate, particles, stress_result);
+  for (std::size_t b = 0; b < peak_yield_ratio.size(); ++b)
+    peak_yield_ratio[b] = std::max(peak_yield_ratio[b], stress_result.max_von_mises_over_yield[b]);
+
+  // Free rigid bodies respond to the contact force (translation only).
+  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+    if (grid_settings.body_is_rigid[b] && parameters.bodies[b].rigid_motion == RigidMotion::free)
+    {
+      grid_settings.rigid_velocity[b] += dt * grid_result.contact_force[b] / body_mass[b];
+      kinematics.rigid_velocity[b] = grid_settings.rigid_velocity[b];
+      for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
+        particles.velocity[p] = grid_settings.rigid_velocity[b];
+    }
+
+  current_time += dt;
+  ++n_steps;
+  if (stress_result.failed_point >= 0)
+    throw BlowUp("material update failed at step " + std::to_string(n_steps) + ", t = " +
+                 std::to_string(current_time) + " s, " +
+                 describe_point(stress_result.failed_point) + ": " +
+                 stress_result.failure_message);
+  check_state();
+  if (parameters.sort_interval > 0 && n_steps % parameters.sort_interval == 0)
+    sort_points();
+}
+
+bool Solver::finished() const
+{
+  if (current_time >= parameters.end_time * (1.0 - 1e-12))
+    return true;
+  if (parameters.stop_when_projectile_exits && projectile_body >= 0 && particles.n_bodies() > 1)
+  {
+    double tail = std::numeric_limits<double>::max();
+    for (std::size_t p = particles.begin_of(projectile_body); p < particles.end_of(projectile_body); ++p)
+      tail = std::min(tail, particles.position[p].dot(flight_axis));
+    return tail > exit_plane;
+  }
+  return false;
+}
+
+SceneDiagnostics Solver::diagnostics() const
+{
+  return compute_diagnostics(particles, flight_axis, parameters.gravity);
+}
+
+void Solver::sort_points()
+{
+  const auto& n = grid.cells();
+  std::vector<std::int64_t> cell_key(particles.size());
+  std::vector<std::size_t> order(particles.size());
+  for (std::size_t p = 0; p < particles.size(); ++p)
+  {
+    const Vector3 s = grid.to_cell_units(particles.position[p]);
+    const std::int64_t i = static_cast<std::int64_t>(std::floor(s[0])) + 2;
+    const std::int64_t j = static_cast<std::int64_t>(std::floor(s[1])) + 2;
+    const std::int64_t k = static_cast<std::int64_t>(std::floor(s[2])) + 2;
+    cell_key[p] = i + (n[0] + 5) * (j + (n[1] + 5) * k);
+    order[p] = p;
+  }
+  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+    std::stable_sort(order.begin() + particles.begin_of(b), order.begin() + particles.end_of(b),
+                     [&](std::size_t a, std::size_t c) { return cell_key[a] < cell_key[c]; });
+  particles.permute(order);
+}
+
+std::string Solver::describe_point(const std::size_t p) const
+{
+  std::size_t b = 0;
+  while (b + 1 < particles.n_bodies() && p >= particles.end_of(b))
+    ++b;
+  const Vector3& x = particles.position[p];
+  std::ostringstream s;
+  s << "point " << particles.id[p] << " of body '" << parameters.bodies[b].name
+    << "' (material '" << parameters.bodies[b].material << "', "
+    << materials_of_body[b]->model_name() << ") at (" << x[0] << ", " << x[1] << ", " << x[2]
+    << ") m";
+  return s.str();
+}
+
+void Solver::check_state() const
+{
+  const long n = static_cast<long>(particles.size());
+  long bad = n;
+  const Vector3 lower = grid.origin().array() - grid.cell_size();
+  const Vector3 upper = grid.upper_corner().array() + 0.999 * grid.cell_size();
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (long p = 0; p < n; ++p)
+  {
+    const Vector3& x = particles.position[p];
+    const bool finite = x.allFinite() && particles.velocity[p].allFinite() &&
+                        particles.stress[p].allFinite();
+    const double J = particles.deformation_gradient[p].determinant();
+    const bool inside = (x.array() >= lower.array()).all() && (x.array() <= upper.array()).all();
+    if (!finite || !(J > 0.0) || !inside)
+      bad = std::min(bad, p);
+  }
+  if (bad == n)
+    return;
+  const Vector3& x = particles.position[bad];
+  const double J = particles.deformation_gradient[bad].determinant();
+  std::string what, cause;
+  if (!(x.allFinite() && particles.velocity[bad].allFinite() && particles.stress[bad].allFinite()))
+  {
+    what = "NaN or Inf in position, velocity or stress";
+    cause = "an unstable step: lower Time/CFL, or check the bulk modulus and contact settings";
+  }
+  else if (!(J > 0.0))
+  {
+    what = "inverted deformation (J = " + std::to_string(J) + ")";
+    cause = "excessive compression in one step: lower Time/CFL, raise the bulk modulus, or add "
+            "artificial viscosity";
+  }
+  else
+  {
+    what = "point left the background grid";
+    cause = "enlarge Grid/Domain minimum and maximum so flying fragments stay inside, or end "
+            "the run earlier";
+  }
+  std::ostringstream s;
+  s << what << " at step " << n_steps << ", t = " << current_time << " s, " << describe_point(bad)
+    << "; likely cause: " << cause;
+  throw BlowUp(s.str());
+}
+} // namespace vulnus::mpm

@@ -1,0 +1,113 @@
+// The explicit MPM time step of a scene (update-stress-last family, USL or MUSL):
+//   CFL step -> active nodes -> particle-to-grid -> grid update with contact and boundary
+//   conditions -> grid-to-particle -> [MUSL re-projection] -> deformation gradients ->
+//   stress update -> rigid-body motion -> blow-up checks.
+// Each stage is a free function over arrays in its own file; this class owns the state.
+#pragma once
+
+#include "materials/material.h"
+#include "mpm/diagnostics.h"
+#include "mpm/grid.h"
+#include "mpm/grid_fields.h"
+#include "mpm/grid_update.h"
+#include "mpm/grid_to_particle.h"
+#include "mpm/particle_to_grid.h"
+#include "mpm/particles.h"
+#include "mpm/scene_parameters.h"
+#include "mpm/stress_update.h"
+#include "mpm/transfer_settings.h"
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vulnus::mpm
+{
+/// A numerical blow-up detected during a step; the message names step, time, point, body,
+/// position and the likely cause.
+class BlowUp : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+class Solver
+{
+public:
+  explicit Solver(const SceneParameters& scene);
+
+  /// Replaces the point velocities of the deformable bodies by field(x) (initial conditions
+  /// such as a vibration mode); resets the initial energy.
+  void set_point_velocities(const std::function<Vector3(const Vector3&)>& field);
+
+  /// dt = CFL h / max over deformable points of (wave speed + |v|), rigid bodies by |v| only.
+  double stable_time_step() const;
+
+  /// Advances one step of size min(stable step, max step, time left). Throws BlowUp.
+  void advance();
+
+  /// True when the end time is reached or the projectile's tail has left the targets.
+  bool finished() const;
+
+  double time() const { return current_time; }
+  std::size_t step_count() const { return n_steps; }
+  double last_time_step() const { return time_step; }
+  const Particles& points() const { return particles; }
+  const Grid& background_grid() const { return grid; }
+  const SceneParameters& scene() const { return parameters; }
+  const materials::Material& body_material(std::size_t b) const { return *materials_of_body[b]; }
+
+  SceneDiagnostics diagnostics() const;
+  /// Index of the projectile body, or -1.
+  int projectile() const { return projectile_body; }
+  /// Axis of the projectile's flight (unit), or +y when there is no projectile.
+  const Vector3& flight_direction() const { return flight_axis; }
+  /// Force the other bodies exert on each body in the last step (N).
+  const std::vector<Vector3>& contact_forces() const { return grid_result.contact_force; }
+  /// Kinetic energy removed by contact since the start (J).
+  double contact_dissipation() const { return accumulated_contact_dissipation; }
+  /// Largest von Mises / yield seen so far, per body.
+  const std::vector<double>& peak_von_mises_over_yield() const { return peak_yield_ratio; }
+  /// Total energy at the start (J).
+  double initial_energy() const { return energy_at_start; }
+  /// Number of nodes where bodies met in the last step.
+  std::size_t contact_nodes() const { return grid_result.n_contact_nodes; }
+  std::size_t active_nodes() const { return grid.n_active(); }
+  bool uses_contact() const { return contact_active; }
+
+private:
+  void sort_points();
+  void check_state() const;
+  std::string describe_point(std::size_t p) const;
+
+  SceneParameters parameters;
+  std::vector<std::unique_ptr<materials::Material>> owned_materials;
+  std::vector<const materials::Material*> materials_of_body;
+  Grid grid;
+  Particles particles;
+  GridFields fields;
+  ScatterBuffers buffers;
+  TransferSettings transfer;
+  GridUpdateSettings grid_settings;
+  GridUpdateResult grid_result;
+  KinematicsSettings kinematics;
+  StressUpdateSettings stress_settings;
+  StressUpdateResult stress_result;
+  std::vector<double> body_mass;
+  std::vector<Vector3> displacement;
+  std::vector<double> volumetric_rate;
+  std::vector<double> peak_yield_ratio;
+  bool contact_active = false;
+  int projectile_body = -1;
+  Vector3 flight_axis = Vector3::UnitY();
+  double exit_plane = 0.0; ///< largest x . flight_axis of the other bodies at the start
+
+  double current_time = 0.0;
+  double time_step = 0.0;
+  std::size_t n_steps = 0;
+  double accumulated_contact_dissipation = 0.0;
+  double energy_at_start = 0.0;
+};
+} // namespace vulnus::mpm

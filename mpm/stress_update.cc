@@ -1,0 +1,125 @@
+// Material updates of the points, per body and per block, with threads over blocks.
+#include "mpm/stress_update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vulnus::mpm
+{
+namespace
+{
+constexpr long block_size = 512;
+
+/// Updates points [begin, end) of one body; returns the viscous dissipation (J).
+double update_range(const StressUpdateSettings& s, const materials::Material& material,
+                    const double density, const std::vector<double>& volumetric_rate,
+                    Particles& particles, const long begin, const long end,
+                    std::vector<materials::PointResponse>& responses, double& max_ratio)
+{
+  double viscous = 0.0;
+  long run_begin = begin;
+  while (run_begin < end)
+  {
+    // A run of points that still carry stress.
+    while (run_begin < end && particles.state[run_begin].failure == materials::total_failure)
+      ++run_begin;
+    long run_end = run_begin;
+    while (run_end < end && particles.state[run_end].failure != materials::total_failure)
+      ++run_end;
+    if (run_begin == run_end)
+      break;
+    materials::PointBlock block;
+    block.n_points = static_cast<std::size_t>(run_end - run_begin);
+    block.deformation_gradients = &particles.deformation_gradient[run_begin];
+    block.fiber_directions = material.uses_fibers() ? &particles.fiber_direction[run_begin] : nullptr;
+    block.states = &particles.state[run_begin];
+    block.responses = responses.data();
+    material.update_block(block);
+    for (long p = run_begin; p < run_end; ++p)
+    {
+      const materials::PointResponse& r = responses[p - run_begin];
+      const double J = particles.deformation_gradient[p].determinant();
+      const double current_density = density / J;
+      double wave_speed = std::sqrt(r.p_wave_modulus / current_density);
+      Tensor2 sigma = r.cauchy_stress;
+      double dissipated = r.dissipated_density;
+      const double rate = volumetric_rate[p];
+      if (rate < 0.0 && (s.viscosity_linear > 0.0 || s.viscosity_quadratic > 0.0))
+      {
+        const double h = s.cell_size;
+        const double q = current_density * (s.viscosity_linear * wave_speed * h * -rate +
+                                             s.viscosity_quadratic * h * h * rate * rate);
+        sigma.diagonal().array() -= q;
+        const double viscous_density = q * -rate * J * s.time_step;
+        dissipated += viscous_density;
+        viscous += viscous_density * particles.reference_volume[p];
+        wave_speed += std::sqrt(q / current_density);
+      }
+      particles.stress[p] = sigma;
+      particles.energy_density[p] = r.energy_density;
+      particles.dissipated_density[p] += dissipated;
+      particles.wave_speed[p] = wave_speed;
+      max_ratio = std::max(max_ratio, r.von_mises_over_yield);
+      if (particles.state[p].failure == materials::total_failure)
+        particles.stress[p].setZero();
+    }
+    run_begin = run_end;
+  }
+  return viscous;
+}
+} // namespace
+
+void update_stresses(const StressUpdateSettings& s, const std::vector<double>& volumetric_rate,
+                     Particles& particles, StressUpdateResult& result)
+{
+  const std::size_t n_bodies = particles.n_bodies();
+  result.max_von_mises_over_yield.assign(n_bodies, 0.0);
+  result.viscous_dissipation = 0.0;
+  result.failed_point = -1;
+  result.failure_message.clear();
+  for (std::size_t b = 0; b < n_bodies; ++b)
+  {
+    const materials::Material& material = *s.body_material[b];
+    if (material.is_rigid())
+      continue;
+    const long begin = particles.begin_of(b), end = particles.end_of(b);
+    const long n_blocks = (end - begin + block_size - 1) / block_size;
+    double viscous = 0.0;
+    double max_ratio = 0.0;
+    long failed_point = -1;
+    std::string message;
+#pragma omp parallel reduction(+ : viscous) reduction(max : max_ratio)
+    {
+      std::vector<materials::PointResponse> responses(block_size);
+#pragma omp for schedule(dynamic, 4)
+      for (long k = 0; k < n_blocks; ++k)
+      {
+        const long first = begin + k * block_size;
+        const long last = std::min(end, first + block_size);
+        try
+        {
+          viscous += update_range(s, material, s.body_density[b], volumetric_rate, particles,
+                                  first, last, responses, max_ratio);
+        }
+        catch (const std::exception& e)
+        {
+#pragma omp critical
+          if (failed_point < 0 || first < failed_point)
+          {
+            failed_point = first;
+            message = e.what();
+          }
+        }
+      }
+    }
+    result.viscous_dissipation += viscous;
+    result.max_von_mises_over_yield[b] = max_ratio;
+    if (failed_point >= 0 && result.failed_point < 0)
+    {
+      result.failed_point = failed_point;
+      result.failure_message = message;
+    }
+  }
+}
+} // namespace vulnus::mpm

@@ -1,0 +1,36 @@
+// Stress-update stage: every deformable body's material updates its points in blocks (one
+// virtual call per block of contiguous intact or partly failed points; totally failed points
+// and rigid bodies are skipped), then the optional artificial bulk viscosity is added.
+#pragma once
+
+#include "materials/material.h"
+#include "mpm/particles.h"
+
+#include <vector>
+
+namespace vulnus::mpm
+{
+struct StressUpdateSettings
+{
+  double time_step = 0.0;
+  double cell_size = 0.0;
+  /// Bulk viscosity q = rho (linear c h |tr D| + quadratic h^2 tr(D)^2) in compression.
+  double viscosity_linear = 0.0;
+  double viscosity_quadratic = 0.0;
+  std::vector<const materials::Material*> body_material;
+  std::vector<double> body_density; ///< reference density per body, kg/m^3
+};
+
+struct StressUpdateResult
+{
+  std::vector<double> max_von_mises_over_yield; ///< per body
+  double viscous_dissipation = 0.0;             ///< J this step
+  /// First point whose update failed (material threw), or -1; with its message.
+  long failed_point = -1;
+  std::string failure_message;
+};
+
+void update_stresses(const StressUpdateSettings& settings,
+                     const std::vector<double>& volumetric_rate, Particles& particles,
+                     StressUpdateResult& result);
+} // namespace vulnus::mpm

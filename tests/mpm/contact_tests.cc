@@ -1,0 +1,128 @@
+// Multi-velocity-field contact: momentum conservation and no interpenetration in a
+// collision, Coulomb friction on an incline (analytic acceleration), rigid projectile.
+#include "mpm/solver.h"
+#include "scene_fixtures.h"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace vulnus;
+using mpm::Vector3;
+
+TEST(MpmContact, CollisionConservesMomentumWithoutInterpenetration)
+{
+  for (const double friction : {0.0, 0.08, -1.0})
+  {
+    mpm::SceneParameters scene = test::empty_scene(Vector3(-12e-3, -6e-3, -6e-3), Vector3(12e-3, 6e-3, 6e-3), 1e-3);
+    scene.contact.friction_coefficient = friction;
+    scene.materials.push_back(test::elastic_material("gel", 1e5, 1e4));
+    scene.bodies.push_back(test::sphere_body("left", "gel", Vector3(-4e-3, 0, 0), 3e-3, 1000.0, 2));
+    scene.bodies.push_back(test::sphere_body("right", "gel", Vector3(4e-3, 0, 0), 3e-3, 2000.0, 2));
+    // Relative speed 1.5 m/s, about 1/7 of the wave speed: small deformation, so the contact
+    // surface stays near a plane normal to x.
+    scene.bodies[0].initial_velocity = Vector3(1.0, 0.2, 0);
+    scene.bodies[1].initial_velocity = Vector3(-0.5, 0, 0.0);
+    mpm::Solver solver(scene);
+    const mpm::SceneDiagnostics start = solver.diagnostics();
+    const double scale = start.bodies[0].mass * 1.0;
+    double closest_gap = 1.0;
+    bool touched = false;
+    while (solver.time() < 6e-3)
+    {
+      solver.advance();
+      const mpm::SceneDiagnostics d = mpm::compute_diagnostics(solver.points(), Vector3::UnitX(), Vector3::Zero());
+      EXPECT_LT((d.momentum - start.momentum).norm(), 1e-12 * scale) << "friction " << friction;
+      // The spheres stay on their own sides of the plane between them (head-on along x).
+      const double gap = d.bodies[1].min_along - d.bodies[0].max_along;
+      closest_gap = std::min(closest_gap, gap);
+      touched = touched || solver.contact_nodes() > 0;
+    }
+    EXPECT_TRUE(touched);
+    if (friction >= 0.0) // no-slip glues them: the gap test applies to contact that separates
+    {
+      // Multi-velocity contact acts once the bodies share nodes, so points may close in to
+      // less than a cell but must not pass: bound a quarter cell.
+      EXPECT_GT(closest_gap, -0.25e-3) << "friction " << friction;
+      // The bodies bounced: the light one now moves left.
+      EXPECT_LT(solver.diagnostics().bodies[0].velocity[0], 0.0);
+    }
+  }
+}
+
+namespace
+{
+/// A stiff block resting on a rigid plate, gravity tilted by `angle` so the block slides
+/// along x. Returns the block's mean acceleration along x from a least-squares parabola fit.
+double sliding_acceleration(const double friction, const double angle)
+{
+  const double g = 9.81;
+  mpm::SceneParameters scene = test::empty_scene(Vector3(0, 0, 0), Vector3(40e-3, 10e-3, 4e-3), 1e-3);
+  using F = mpm::FaceCondition;
+  scene.domain_faces = {{F::free, F::free, F::free, F::free, F::roller, F::roller}};
+  scene.contact.friction_coefficient = friction;
+  scene.gravity = Vector3(g * std::sin(angle), -g * std::cos(angle), 0.0);
+  scene.cfl = 0.3;
+  scene.materials.push_back(test::elastic_material("block", 2e6, 2e5));
+  scene.materials.push_back(test::rigid_material("plate"));
+  scene.bodies.push_back(test::box_body("block", "block", Vector3(2e-3, 3e-3, 0), Vector3(12e-3, 7e-3, 4e-3), 1000.0, 2));
+  scene.bodies.push_back(test::box_body("plate", "plate", Vector3(0, 0, 0), Vector3(40e-3, 3e-3, 4e-3), 1000.0, 2));
+  scene.bodies[1].rigid_motion = mpm::RigidMotion::prescribed;
+  mpm::Solver solver(scene);
+  // Let the block settle on the plate for 5 ms, then fit x(t) = a/2 t^2 + b t + c.
+  const double settle = 5e-3, end = 25e-3;
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  while (solver.time() < end)
+  {
+    solver.advance();
+    if (solver.time() < settle)
+      continue;
+    const double t = solver.time() - settle;
+    const Eigen::Vector3d basis(0.5 * t * t, t, 1.0);
+    normal += basis * basis.transpose();
+    rhs += basis * solver.diagnostics().bodies[0].centroid[0];
+  }
+  return normal.ldlt().solve(rhs)[0];
+}
+} // namespace
+
+TEST(MpmContact, FrictionlessBlockSlidesWithGSinTheta)
+{
+  const double angle = M_PI / 6;
+  const double expected = 9.81 * std::sin(angle);
+  EXPECT_NEAR(sliding_acceleration(0.0, angle), expected, 0.03 * expected);
+}
+
+TEST(MpmContact, CoulombFrictionSlowsTheSlide)
+{
+  const double angle = M_PI / 6, mu = 0.08;
+  const double expected = 9.81 * (std::sin(angle) - mu * std::cos(angle));
+  EXPECT_NEAR(sliding_acceleration(mu, angle), expected, 0.03 * expected);
+}
+
+TEST(MpmContact, FreeRigidProjectileIsSlowedByTheTarget)
+{
+  mpm::SceneParameters scene = test::empty_scene(Vector3(-8e-3, -8e-3, -8e-3), Vector3(8e-3, 20e-3, 8e-3), 1e-3);
+  scene.materials.push_back(test::elastic_material("gel", 2e5, 2.1e3));
+  scene.materials.push_back(test::rigid_material("steel"));
+  scene.bodies.push_back(test::box_body("slab", "gel", Vector3(-8e-3, 0, -8e-3), Vector3(8e-3, 4e-3, 8e-3), 1060.0, 2));
+  mpm::BodyParameters ball = test::sphere_body("ball", "steel", Vector3(0, -3e-3, 0), 2.5e-3, 8930.0, 2);
+  ball.initial_velocity = Vector3(0, 50, 0);
+  ball.is_projectile = true;
+  scene.bodies.push_back(ball);
+  scene.end_time = 0.12e-3;
+  mpm::Solver solver(scene);
+  const mpm::SceneDiagnostics start = solver.diagnostics();
+  while (!solver.finished())
+    solver.advance();
+  const mpm::SceneDiagnostics end = solver.diagnostics();
+  const double v_end = end.bodies[1].velocity[1];
+  EXPECT_LT(v_end, 50.0 - 1e-3);
+  EXPECT_GT(v_end, 0.0);
+  // Momentum given to the slab equals momentum lost by the ball (rigid reaction), up to
+  // what the fixed faces absorb (none here: all faces free).
+  const double lost = start.bodies[1].mass * (50.0 - v_end);
+  EXPECT_NEAR(end.bodies[0].velocity[1] * end.bodies[0].mass, lost, 1e-6 * lost + 1e-12);
+}
