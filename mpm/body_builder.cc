@@ -69,7 +69,7 @@ void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& par
     const unsigned int n = body.particles_per_cell;
     const double spacing = h / n;
     const double volume = spacing * spacing * spacing;
-    Vector3 lower, upper;
+    Vector3 lower = Vector3::Zero(), upper = Vector3::Zero();
     body_bounding_box(body, lower, upper);
     std::array<long, 3> first, last;
     for (int d = 0; d < 3; ++d)

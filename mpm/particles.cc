@@ -6,6 +6,7 @@ namespace vulnus::mpm
 void Particles::reserve(const std::size_t n)
 {
   position.reserve(n);
+  reference_position.reserve(n);
   velocity.reserve(n);
   deformation_gradient.reserve(n);
   stress.reserve(n);
@@ -24,6 +25,7 @@ void Particles::append(const Vector3& x, const Vector3& v, const double m, const
 {
   id.push_back(static_cast<std::uint32_t>(position.size()));
   position.push_back(x);
+  reference_position.push_back(x);
   velocity.push_back(v);
   deformation_gradient.push_back(Tensor2::Identity());
   stress.push_back(Tensor2::Zero());
@@ -41,16 +43,33 @@ namespace
 template <class T>
 void apply_order(std::vector<T>& values, const std::vector<std::size_t>& order)
 {
-  std::vector<T> reordered(values.size());
+  std::vector<T> reordered(order.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     reordered[i] = values[order[i]];
   values.swap(reordered);
 }
 } // namespace
 
+void Particles::keep_only(const std::vector<char>& keep)
+{
+  std::vector<std::size_t> order;
+  order.reserve(size());
+  std::vector<std::size_t> new_begin{0};
+  for (std::size_t b = 0; b + 1 < body_begin.size(); ++b)
+  {
+    for (std::size_t p = body_begin[b]; p < body_begin[b + 1]; ++p)
+      if (keep[p])
+        order.push_back(p);
+    new_begin.push_back(order.size());
+  }
+  permute(order);
+  body_begin = new_begin;
+}
+
 void Particles::permute(const std::vector<std::size_t>& order)
 {
   apply_order(position, order);
+  apply_order(reference_position, order);
   apply_order(velocity, order);
   apply_order(deformation_gradient, order);
   apply_order(stress, order);

@@ -18,6 +18,7 @@ using Tensor2 = Eigen::Matrix3d;
 struct Particles
 {
   std::vector<Vector3> position;
+  std::vector<Vector3> reference_position; ///< where the point started (wound maps)
   std::vector<Vector3> velocity;
   std::vector<Tensor2> deformation_gradient;
   std::vector<Tensor2> stress; ///< Cauchy stress, Pa
@@ -46,6 +47,9 @@ struct Particles
   void start_body() { body_begin.push_back(size()); }
   /// Closes the last body (records its end).
   void finish_body() { body_begin.back() = size(); }
+
+  /// Removes the points whose keep flag is 0, preserving order and body ranges.
+  void keep_only(const std::vector<char>& keep);
 
   /// Reorders every array by `order` (new index i takes old index order[i]).
   void permute(const std::vector<std::size_t>& order);

@@ -114,5 +114,8 @@ struct SceneParameters
   unsigned int sort_interval = 50;     ///< steps between re-sorting particles by cell
   unsigned int n_threads = 0;          ///< 0: all available
   bool stop_when_projectile_exits = true;
+  /// Points that leave the grid: removed (their energy and momentum booked as outflow) or,
+  /// when false, the run stops as a blow-up.
+  bool remove_points_leaving_grid = false;
 };
 } // namespace vulnus::mpm

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <omp.h>
 #include <sstream>
 
 namespace vulnus::mpm
@@ -131,6 +132,12 @@ double Solver::stable_time_step() const
 
 void Solver::advance()
 {
+  double clock = omp_get_wtime();
+  auto lap = [&clock](double& phase) {
+    const double now = omp_get_wtime();
+    phase += now - clock;
+    clock = now;
+  };
   const double stable = stable_time_step();
   if (!(stable >= parameters.min_time_step))
   {
@@ -146,13 +153,16 @@ void Solver::advance()
   if (time_step <= 0.0)
     return;
   const double dt = time_step;
+  lap(timings.time_step);
 
   mark_active_nodes(particles, transfer, grid);
   particles_to_grid(particles, grid, transfer, true, buffers, fields);
+  lap(timings.particle_to_grid);
 
   grid_settings.time_step = dt;
   update_grid(grid, grid_settings, fields, grid_result);
   accumulated_contact_dissipation += grid_result.contact_dissipation;
+  lap(timings.grid_update);
 
   kinematics.time_step = dt;
   update_point_kinematics(grid, transfer, kinematics, fields, particles, displacement);
@@ -163,6 +173,7 @@ void Solver::advance()
   }
   update_deformation_gradients(grid, transfer, kinematics, fields, particles, volumetric_rate);
   move_points(displacement, particles);
+  lap(timings.grid_to_particle);
 
   stress_settings.time_step = dt;
   update_stresses(stress_settings, volumetric_rate, particles, stress_result);
@@ -178,6 +189,7 @@ void Solver::advance()
       for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
         particles.velocity[p] = grid_settings.rigid_velocity[b];
     }
+  lap(timings.stress_update);
 
   current_time += dt;
   ++n_steps;
@@ -186,9 +198,12 @@ void Solver::advance()
                  std::to_string(current_time) + " s, " +
                  describe_point(stress_result.failed_point) + ": " +
                  stress_result.failure_message);
+  if (parameters.remove_points_leaving_grid)
+    remove_points_outside_grid();
   check_state();
   if (parameters.sort_interval > 0 && n_steps % parameters.sort_interval == 0)
     sort_points();
+  lap(timings.checks_and_sorting);
 }
 
 bool Solver::finished() const
@@ -228,6 +243,32 @@ void Solver::sort_points()
     std::stable_sort(order.begin() + particles.begin_of(b), order.begin() + particles.end_of(b),
                      [&](std::size_t a, std::size_t c) { return cell_key[a] < cell_key[c]; });
   particles.permute(order);
+}
+
+void Solver::remove_points_outside_grid()
+{
+  const Vector3 lower = grid.origin().array() - grid.cell_size();
+  const Vector3 upper = grid.upper_corner().array() + 0.999 * grid.cell_size();
+  const std::size_t n = particles.size();
+  std::vector<char> keep(n, 1);
+  std::size_t n_outside = 0;
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    const Vector3& x = particles.position[p];
+    if (!x.allFinite() || ((x.array() >= lower.array()).all() && (x.array() <= upper.array()).all()))
+      continue; // NaN is a blow-up, not an outflow: check_state reports it
+    keep[p] = 0;
+    ++n_outside;
+    const double m = particles.mass[p];
+    outflow_energy += 0.5 * m * particles.velocity[p].squaredNorm() +
+                      particles.reference_volume[p] *
+                        (particles.energy_density[p] + particles.dissipated_density[p]);
+    outflow_momentum += m * particles.velocity[p];
+  }
+  if (n_outside == 0)
+    return;
+  n_removed += n_outside;
+  particles.keep_only(keep);
 }
 
 std::string Solver::describe_point(const std::size_t p) const

@@ -33,6 +33,22 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+/// Wall-clock seconds spent in each stage since the start.
+struct PhaseTimes
+{
+  double time_step = 0.0;
+  double particle_to_grid = 0.0;
+  double grid_update = 0.0; ///< includes contact
+  double grid_to_particle = 0.0;
+  double stress_update = 0.0;
+  double checks_and_sorting = 0.0;
+  double total() const
+  {
+    return time_step + particle_to_grid + grid_update + grid_to_particle + stress_update +
+           checks_and_sorting;
+  }
+};
+
 class Solver
 {
 public:
@@ -70,16 +86,23 @@ public:
   double contact_dissipation() const { return accumulated_contact_dissipation; }
   /// Largest von Mises / yield seen so far, per body.
   const std::vector<double>& peak_von_mises_over_yield() const { return peak_yield_ratio; }
+  /// Points removed because they left the grid, and the kinetic plus stored energy and the
+  /// momentum they carried out.
+  std::size_t removed_points() const { return n_removed; }
+  double removed_energy() const { return outflow_energy; }
+  const Vector3& removed_momentum() const { return outflow_momentum; }
   /// Total energy at the start (J).
   double initial_energy() const { return energy_at_start; }
   /// Number of nodes where bodies met in the last step.
   std::size_t contact_nodes() const { return grid_result.n_contact_nodes; }
   std::size_t active_nodes() const { return grid.n_active(); }
   bool uses_contact() const { return contact_active; }
+  const PhaseTimes& phase_times() const { return timings; }
 
 private:
   void sort_points();
   void check_state() const;
+  void remove_points_outside_grid();
   std::string describe_point(std::size_t p) const;
 
   SceneParameters parameters;
@@ -109,5 +132,9 @@ private:
   std::size_t n_steps = 0;
   double accumulated_contact_dissipation = 0.0;
   double energy_at_start = 0.0;
+  PhaseTimes timings;
+  std::size_t n_removed = 0;
+  double outflow_energy = 0.0;
+  Vector3 outflow_momentum = Vector3::Zero();
 };
 } // namespace vulnus::mpm

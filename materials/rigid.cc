@@ -1,0 +1,19 @@
+// Registration of the rigid material.
+#include "materials/rigid.h"
+
+#include "materials/material_registry.h"
+
+namespace vulnus::materials
+{
+namespace
+{
+const bool rigid_registered = register_material_model(
+    "rigid",
+    "Rigid body: no stress update, infinitely stiff, excluded from the time-step limit; it moves "
+    "with prescribed or contact-driven rigid motion. Safe for the bullet when the elastic-plastic "
+    "model reports von Mises / yield well below 1. No entries.",
+    [](const MaterialParameters&) -> std::unique_ptr<Material>
+    { return std::make_unique<Rigid>(); },
+    [](const MaterialParameters&, std::vector<std::string>&) {});
+} // namespace
+} // namespace vulnus::materials

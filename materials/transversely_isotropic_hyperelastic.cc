@@ -1,0 +1,333 @@
+// Weiss 1996 tissue law with two-surface failure: stress, energy, wave modulus, tangent,
+// and its registration under "transversely isotropic hyperelastic" / "isotropic hyperelastic".
+#include "materials/transversely_isotropic_hyperelastic.h"
+
+#include "materials/dual_number.h"
+#include "materials/material_registry.h"
+#include "materials/two_surface_failure.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace vulnus::materials
+{
+namespace
+{
+template <typename Scalar> using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
+
+void throw_inverted(const double J)
+{
+  std::ostringstream message;
+  message << "tissue material: det F = " << J
+          << " <= 0 (inverted or degenerate element/particle); reduce the time step or "
+             "refine the resolution";
+  throw std::runtime_error(message.str());
+}
+
+template <typename Scalar> Matrix3<Scalar> cofactor(const Matrix3<Scalar>& F)
+{
+  Matrix3<Scalar> c;
+  c(0, 0) = F(1, 1) * F(2, 2) - F(1, 2) * F(2, 1);
+  c(0, 1) = F(1, 2) * F(2, 0) - F(1, 0) * F(2, 2);
+  c(0, 2) = F(1, 0) * F(2, 1) - F(1, 1) * F(2, 0);
+  c(1, 0) = F(0, 2) * F(2, 1) - F(0, 1) * F(2, 2);
+  c(1, 1) = F(0, 0) * F(2, 2) - F(0, 2) * F(2, 0);
+  c(1, 2) = F(0, 1) * F(2, 0) - F(0, 0) * F(2, 1);
+  c(2, 0) = F(0, 1) * F(1, 2) - F(0, 2) * F(1, 1);
+  c(2, 1) = F(0, 2) * F(1, 0) - F(0, 0) * F(1, 2);
+  c(2, 2) = F(0, 0) * F(1, 1) - F(0, 1) * F(1, 0);
+  return c;
+}
+} // namespace
+
+template <bool with_fibers>
+TissueHyperelastic<with_fibers>::TissueHyperelastic(const TissueParameters& parameters)
+    : prm(parameters), fibers(with_fibers ? parameters.c3 : 0.0, parameters.c4,
+                              with_fibers ? parameters.c5 : 0.0, parameters.lambda_star),
+      small_strain_shear_modulus(2.0 * (parameters.c1 + parameters.c2))
+{
+  prm.with_fibers = with_fibers;
+}
+
+template <bool with_fibers> std::string TissueHyperelastic<with_fibers>::model_name() const
+{
+  return with_fibers ? "transversely isotropic hyperelastic" : "isotropic hyperelastic";
+}
+
+template <bool with_fibers>
+template <typename Scalar>
+void TissueHyperelastic<with_fibers>::kirchhoff_parts(const Matrix3<Scalar>& F, const Vector3& a0,
+                                                      const std::uint8_t failure_flags,
+                                                      Matrix3<Scalar>& tau_volumetric,
+                                                      Matrix3<Scalar>& tau_matrix,
+                                                      Matrix3<Scalar>& tau_fibers,
+                                                      TissueStressParts* energies) const
+{
+  using std::cbrt;
+  using std::log;
+  using std::sqrt;
+  const Matrix3<Scalar> identity = Matrix3<Scalar>::Identity();
+  const Scalar J = F.determinant();
+  const Scalar J_minus_third = 1.0 / cbrt(J);
+  tau_volumetric.setZero();
+  tau_matrix.setZero();
+  tau_fibers.setZero();
+  if (energies)
+    energies->J = value_of(J);
+
+  if (!(failure_flags & matrix_failed))
+  {
+    const Scalar ln_J = log(J);
+    tau_volumetric = (prm.bulk_modulus * ln_J) * identity;
+    const Matrix3<Scalar> B_bar = (J_minus_third * J_minus_third) * (F * F.transpose());
+    const Scalar I1 = B_bar.trace();
+    if (energies)
+      energies->first_invariant = value_of(I1);
+    if (prm.c2 != 0.0)
+    {
+      const Matrix3<Scalar> B_bar_2 = B_bar * B_bar;
+      const Scalar I2 = 0.5 * (I1 * I1 - B_bar_2.trace());
+      tau_matrix = 2.0 * ((prm.c1 + prm.c2 * I1) * B_bar - prm.c2 * B_bar_2 -
+                          ((prm.c1 * I1 + 2.0 * prm.c2 * I2) / 3.0) * identity);
+      if (energies)
+        energies->matrix_energy = value_of(prm.c1 * (I1 - 3.0) + prm.c2 * (I2 - 3.0));
+    }
+    else
+    {
+      tau_matrix = (2.0 * prm.c1) * (B_bar - (I1 / 3.0) * identity);
+      if (energies)
+        energies->matrix_energy = prm.c1 * (value_of(I1) - 3.0);
+    }
+    if (energies)
+      energies->volumetric_energy = 0.5 * prm.bulk_modulus * value_of(ln_J * ln_J);
+  }
+
+  if constexpr (with_fibers)
+  {
+    const Eigen::Matrix<Scalar, 3, 1> Fa = J_minus_third * (F * a0.cast<Scalar>());
+    const Scalar I4 = Fa.dot(Fa);
+    const Scalar lambda = sqrt(I4);
+    if (energies)
+      energies->fiber_stretch = value_of(lambda);
+    if (!(failure_flags & fiber_failed) && lambda > Scalar(1.0))
+    {
+      const Scalar f = fibers.force(lambda);
+      tau_fibers = (f / I4) * (Fa * Fa.transpose()) - (f / 3.0) * identity;
+      if (energies)
+        energies->fiber_energy = fibers.energy(value_of(lambda));
+    }
+  }
+}
+
+template <bool with_fibers>
+template <typename Scalar>
+Eigen::Matrix<Scalar, 3, 3>
+TissueHyperelastic<with_fibers>::first_piola_stress(const Matrix3<Scalar>& F, const Vector3& a0,
+                                                    const std::uint8_t failure_flags) const
+{
+  const double J = value_of(F.determinant());
+  if (!(J > 0.0))
+    throw_inverted(J);
+  Matrix3<Scalar> tau_v, tau_m, tau_f;
+  kirchhoff_parts(F, a0, failure_flags, tau_v, tau_m, tau_f, nullptr);
+  // P = tau F^{-T} = tau cof(F) / J.
+  return (tau_v + tau_m + tau_f) * cofactor(F) / F.determinant();
+}
+
+template <bool with_fibers>
+TissueStressParts TissueHyperelastic<with_fibers>::stress_parts(const Tensor2& F, const Vector3& a0,
+                                                                const std::uint8_t flags) const
+{
+  const double J = F.determinant();
+  if (!(J > 0.0))
+    throw_inverted(J);
+  TissueStressParts parts;
+  kirchhoff_parts(F, a0, flags, parts.volumetric, parts.matrix, parts.fibers, &parts);
+  parts.volumetric /= J;
+  parts.matrix /= J;
+  parts.fibers /= J;
+  return parts;
+}
+
+template <bool with_fibers>
+double TissueHyperelastic<with_fibers>::wave_modulus(const double J, const double I1,
+                                                     const double lambda,
+                                                     const std::uint8_t flags) const
+{
+  double modulus = 0.0;
+  if (!(flags & matrix_failed))
+  {
+    const double bulk_tangent = prm.bulk_modulus * (1.0 - std::log(J)) / J;
+    const double shear_tangent = 2.0 * (prm.c1 + prm.c2 * I1) * I1 / (3.0 * J);
+    modulus += std::max(bulk_tangent, 0.0) + 4.0 / 3.0 * shear_tangent;
+  }
+  if constexpr (with_fibers)
+  {
+    if (!(flags & fiber_failed) && lambda > 1.0)
+      modulus += (fibers.stiffness(lambda) + fibers.force(lambda)) / J;
+  }
+  return std::max(modulus, 4.0 / 3.0 * small_strain_shear_modulus);
+}
+
+template <bool with_fibers>
+double TissueHyperelastic<with_fibers>::p_wave_modulus(const Tensor2& F, const Vector3& a0,
+                                                       const std::uint8_t flags) const
+{
+  const double J = F.determinant();
+  if (!(J > 0.0))
+    throw_inverted(J);
+  const double J_minus_third = 1.0 / std::cbrt(J);
+  const double I1 = J_minus_third * J_minus_third * F.squaredNorm();
+  const double lambda = with_fibers ? J_minus_third * (F * a0).norm() : 1.0;
+  return wave_modulus(J, I1, lambda, flags);
+}
+
+template <bool with_fibers>
+void TissueHyperelastic<with_fibers>::update_point(const Tensor2& F, const Vector3& a0,
+                                                   PointState& state, PointResponse& response) const
+{
+  const double J = F.determinant();
+  if (!(J > 0.0) || !std::isfinite(J))
+    throw_inverted(J);
+
+  const std::uint8_t old_flags = state.failure;
+  const std::uint8_t flags = updated_failure_flags(prm.failure, F, a0, with_fibers, old_flags);
+  const std::uint8_t newly_failed = flags & ~old_flags;
+
+  TissueStressParts parts;
+  kirchhoff_parts(F, a0, old_flags, parts.volumetric, parts.matrix, parts.fibers, &parts);
+
+  double dissipated = 0.0;
+  if (newly_failed & matrix_failed)
+  {
+    dissipated += parts.volumetric_energy + parts.matrix_energy;
+    parts.volumetric_energy = parts.matrix_energy = 0.0;
+    parts.volumetric.setZero();
+    parts.matrix.setZero();
+  }
+  if (newly_failed & fiber_failed)
+  {
+    dissipated += parts.fiber_energy;
+    parts.fiber_energy = 0.0;
+    parts.fibers.setZero();
+  }
+
+  state.failure = flags;
+  response.cauchy_stress = (parts.volumetric + parts.matrix + parts.fibers) / J;
+  response.energy_density = parts.volumetric_energy + parts.matrix_energy + parts.fiber_energy;
+  response.dissipated_density = dissipated;
+  response.von_mises_over_yield = 0.0;
+  response.p_wave_modulus = wave_modulus(J, parts.first_invariant, parts.fiber_stretch, flags);
+}
+
+template <bool with_fibers>
+Tangent TissueHyperelastic<with_fibers>::tangent(const Tensor2& F, const Vector3& a0,
+                                                 const PointState& state) const
+{
+  Tangent D;
+  const Matrix3<Dual> F_dual = F.cast<Dual>();
+  for (int k = 0; k < 3; ++k)
+    for (int L = 0; L < 3; ++L)
+    {
+      Matrix3<Dual> F_seeded = F_dual;
+      F_seeded(k, L).d = 1.0;
+      const Matrix3<Dual> P = first_piola_stress(F_seeded, a0, state.failure);
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          D(3 * i + j, 3 * k + L) = P(i, j).d;
+    }
+  return D;
+}
+
+template class TissueHyperelastic<true>;
+template class TissueHyperelastic<false>;
+template Eigen::Matrix<double, 3, 3>
+TissueHyperelastic<true>::first_piola_stress(const Matrix3<double>&, const Vector3&,
+                                             std::uint8_t) const;
+template Eigen::Matrix<double, 3, 3>
+TissueHyperelastic<false>::first_piola_stress(const Matrix3<double>&, const Vector3&,
+                                              std::uint8_t) const;
+
+namespace
+{
+void check_tissue(const MaterialParameters& parameters, const bool with_fibers,
+                  std::vector<std::string>& messages)
+{
+  const TissueParameters& t = parameters.tissue;
+  auto require = [&](const bool ok, const std::string& entry, const double value,
+                     const std::string& problem, const std::string& remedy)
+  {
+    if (!ok)
+    {
+      std::ostringstream message;
+      message << entry << ": " << problem << " (got " << value << "); " << remedy;
+      messages.push_back(message.str());
+    }
+  };
+  auto finite = [](const double x) { return std::isfinite(x); };
+  require(finite(t.c1) && t.c1 > 0.0, "c1", t.c1, "must be positive",
+          "give the Mooney-Rivlin constant in Pa, e.g. 2100");
+  require(finite(t.c2) && t.c2 >= 0.0, "c2", t.c2, "must be zero or positive",
+          "give the second Mooney-Rivlin constant in Pa, e.g. 0");
+  require(finite(t.bulk_modulus) && t.bulk_modulus > 0.0, "Bulk modulus", t.bulk_modulus,
+          "must be positive", "give K in Pa, e.g. 200e3");
+  if (with_fibers)
+  {
+    require(finite(t.c3) && t.c3 >= 0.0, "c3", t.c3, "must be zero or positive",
+            "give the toe-region scale in Pa, e.g. 140");
+    require(finite(t.c4) && t.c4 > 0.0 && t.c4 < 700.0, "c4", t.c4,
+            "must be positive and below 700", "give the uncrimping rate, e.g. 22");
+    require(finite(t.c5) && t.c5 >= 0.0, "c5", t.c5, "must be zero or positive",
+            "give the straightened-fiber modulus in Pa, e.g. 100e3");
+    require(finite(t.lambda_star) && t.lambda_star >= 1.0 && t.lambda_star < 10.0, "Lambda star",
+            t.lambda_star, "must be at least 1 (and below 10)",
+            "give the stretch where fibers straighten, e.g. 1.4");
+  }
+  if (t.failure.enabled)
+  {
+    require(finite(t.failure.matrix_shear_limit) && t.failure.matrix_shear_limit > 0.0,
+            "Matrix shear limit", t.failure.matrix_shear_limit, "must be positive",
+            "give the critical shear strain, e.g. 0.5, or disable failure");
+    if (with_fibers)
+      require(finite(t.failure.fiber_stretch_limit) && t.failure.fiber_stretch_limit > 1.0,
+              "Fiber stretch limit", t.failure.fiber_stretch_limit, "must be greater than 1",
+              "give the critical total fiber stretch, e.g. 1.4, or disable failure");
+  }
+}
+
+const std::string common_documentation =
+    " W = c1 (I1~ - 3) + c2 (I2~ - 3) + K/2 (ln J)^2 [+ F2(lambda~)]; entries c1, c2 (Pa), "
+    "Bulk modulus (Pa); two-surface failure (paper eqs. 5-6): Matrix shear limit (default 0.5, "
+    "measure E1-E3, (E1-E3)/2 or ln(l1/l3)) zeroes matrix and volumetric stress, Fiber stretch "
+    "limit (default 1.4, total stretch |F a0|) zeroes fiber stress; flags 0 intact, 1 matrix, "
+    "2 fibers, 3 total.";
+
+const bool transversely_isotropic_registered = register_material_model(
+    "transversely isotropic hyperelastic",
+    "Weiss 1996 uncoupled transversely isotropic hyperelastic tissue (myocardium): Mooney-Rivlin "
+    "matrix plus fibers along a0 with lambda dF2/dlambda = c3 (exp(c4 (lambda-1)) - 1) up to "
+    "Lambda star, c5 lambda + c6 beyond, none in compression; entries c3 (Pa), c4, c5 (Pa), "
+    "Lambda star." +
+        common_documentation + " With fibers switched off it is the isotropic variant.",
+    [](const MaterialParameters& parameters) -> std::unique_ptr<Material>
+    {
+      if (parameters.tissue.with_fibers)
+        return std::make_unique<TransverselyIsotropicHyperelastic>(parameters.tissue);
+      return std::make_unique<IsotropicHyperelastic>(parameters.tissue);
+    },
+    [](const MaterialParameters& parameters, std::vector<std::string>& messages)
+    { check_tissue(parameters, parameters.tissue.with_fibers, messages); });
+
+const bool isotropic_registered = register_material_model(
+    "isotropic hyperelastic",
+    "Isotropic variant of the tissue law (no fiber term, no fiber work): uncoupled Mooney-Rivlin "
+    "with logarithmic volumetric energy." +
+        common_documentation,
+    [](const MaterialParameters& parameters) -> std::unique_ptr<Material>
+    { return std::make_unique<IsotropicHyperelastic>(parameters.tissue); },
+    [](const MaterialParameters& parameters, std::vector<std::string>& messages)
+    { check_tissue(parameters, false, messages); });
+} // namespace
+} // namespace vulnus::materials
