@@ -1,0 +1,167 @@
+// Parsing the command line of `vulnus`.
+#include "app/command_line.h"
+
+#include "app/version.h"
+
+namespace vulnus::app
+{
+namespace
+{
+/// Splits `--name=value` into name and value.
+bool split_option(const std::string& argument, std::string& name, std::string& value)
+{
+  const std::size_t equals = argument.find('=');
+  if (argument.rfind("--", 0) != 0 || equals == std::string::npos)
+    return false;
+  name = argument.substr(0, equals);
+  value = argument.substr(equals + 1);
+  return true;
+}
+
+/// Reads the options shared by `run`, `check` and `--print-parameters`.
+class OptionReader
+{
+public:
+  OptionReader(const std::vector<std::string>& arguments, std::size_t first)
+      : arguments(arguments), next(first)
+  {
+  }
+
+  bool done() const { return next >= arguments.size(); }
+
+  /// Next argument; for `--x=value` returns `--x` and stores the value for value_of().
+  std::string take()
+  {
+    std::string argument = arguments[next++];
+    std::string name, value;
+    if (split_option(argument, name, value))
+    {
+      inline_value = value;
+      has_inline_value = true;
+      return name;
+    }
+    has_inline_value = false;
+    return argument;
+  }
+
+  std::string value_of(const std::string& option)
+  {
+    if (has_inline_value)
+    {
+      has_inline_value = false;
+      return inline_value;
+    }
+    if (done())
+      throw CommandLineError("option " + option + " needs a value");
+    return arguments[next++];
+  }
+
+private:
+  const std::vector<std::string>& arguments;
+  std::size_t next;
+  std::string inline_value;
+  bool has_inline_value = false;
+};
+
+void read_options(OptionReader& reader, CommandLine& line, const bool run)
+{
+  std::vector<DeckOverride> sets, output, threads;
+  while (!reader.done())
+  {
+    const std::string argument = reader.take();
+    if (argument == "--set")
+    {
+      const std::string value = reader.value_of(argument);
+      sets.push_back({value, "--set '" + value + "'"});
+    }
+    else if (argument == "--output" && run)
+    {
+      const std::string value = reader.value_of(argument);
+      output = {{"Output/Directory=" + value, "--output '" + value + "'"}};
+    }
+    else if (argument == "--threads" && run)
+    {
+      const std::string value = reader.value_of(argument);
+      threads = {{"Run/Threads=" + value, "--threads " + value}};
+    }
+    else if (argument == "--restart" && run)
+      throw CommandLineError("--restart is not available yet; start the run again without it");
+    else if (argument == "--deck" && line.command == CommandLine::Command::print_parameters)
+      line.deck = reader.value_of(argument);
+    else if (argument == "--help" || argument == "-h")
+    {
+      line.command = CommandLine::Command::help;
+      return;
+    }
+    else if (argument.rfind("-", 0) == 0 && argument.size() > 1)
+      throw CommandLineError("unknown option '" + argument + "'");
+    else if (line.command == CommandLine::Command::print_parameters && line.output_file.empty())
+      line.output_file = argument;
+    else if (line.command != CommandLine::Command::print_parameters && line.deck.empty())
+      line.deck = argument;
+    else
+      throw CommandLineError("unexpected argument '" + argument + "'");
+  }
+  line.overrides = sets;
+  line.overrides.insert(line.overrides.end(), output.begin(), output.end());
+  line.overrides.insert(line.overrides.end(), threads.begin(), threads.end());
+}
+} // namespace
+
+CommandLine parse_command_line(const int argc, const char* const* argv)
+{
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
+  CommandLine line;
+  if (arguments.empty())
+    throw CommandLineError("no command given");
+
+  const std::string& command = arguments[0];
+  OptionReader reader(arguments, 1);
+  if (command == "--help" || command == "-h" || command == "help")
+    line.command = CommandLine::Command::help;
+  else if (command == "--version")
+    line.command = CommandLine::Command::version;
+  else if (command == "run" || command == "check")
+  {
+    line.command = command == "run" ? CommandLine::Command::run : CommandLine::Command::check;
+    read_options(reader, line, command == "run");
+    if (line.command != CommandLine::Command::help && line.deck.empty())
+      throw CommandLineError("'vulnus " + command + "' needs a deck file (DECK.prm)");
+  }
+  else if (command == "--print-parameters")
+  {
+    line.command = CommandLine::Command::print_parameters;
+    read_options(reader, line, false);
+  }
+  else if (command == "point")
+  {
+    line.command = CommandLine::Command::point;
+    line.arguments.assign(arguments.begin() + 1, arguments.end());
+  }
+  else
+    throw CommandLineError("unknown command '" + command + "'");
+  return line;
+}
+
+std::string usage_text()
+{
+  return "Usage:\n"
+         "  vulnus run DECK.prm [--output DIR] [--set 'Section/Entry=value' ...] [--threads N]\n"
+         "      Run the scene of a deck; results go to DIR (default runs/<deck name>).\n"
+         "      --set overrides any deck entry (repeatable), checked like a deck line.\n"
+         "  vulnus check DECK.prm [--set ...]\n"
+         "      Check a deck (and overrides) without running or writing anything.\n"
+         "  vulnus --print-parameters [FILE] [--deck DECK.prm] [--set ...]\n"
+         "      Write every parameter with its default, allowed values and documentation,\n"
+         "      as a valid deck (to FILE or the terminal); with --deck, as resolved from it.\n"
+         "  vulnus point ...      Evaluate one material point (see `vulnus point --help`).\n"
+         "  vulnus --help         This text.\n"
+         "  vulnus --version      The version.\n"
+         "Exit status: 0 success, 1 failure during a run, 2 bad command line or deck.\n";
+}
+
+std::string version_text()
+{
+  return std::string("vulnus ") + VULNUS_VERSION + "\n";
+}
+} // namespace vulnus::app

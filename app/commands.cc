@@ -1,0 +1,101 @@
+// The subcommands of `vulnus`: run, check, --print-parameters.
+#include "app/commands.h"
+
+#include "app/atomic_file.h"
+#include "app/deck_reader.h"
+#include "app/run_directory.h"
+#include "app/simulation_runner.h"
+#include "app/version.h"
+
+#include <exception>
+#include <iostream>
+
+namespace vulnus::app
+{
+namespace
+{
+void report(const DeckError& error)
+{
+  for (const std::string& message : error.messages())
+    std::cerr << "vulnus: error: " << message << '\n';
+  std::cerr << "vulnus: the deck was not run (see `vulnus --print-parameters` for every entry)\n";
+}
+} // namespace
+
+int run_command(const CommandLine& line)
+{
+  RunParameters parameters;
+  try
+  {
+    parameters = read_run_parameters(line.deck, line.overrides);
+  }
+  catch (const DeckError& error)
+  {
+    report(error);
+    return 2;
+  }
+
+  try
+  {
+    const std::string path = parameters.output.directory.empty() ? default_run_directory(line.deck)
+                                                                 : parameters.output.directory;
+    RunDirectory directory(path);
+    directory.write_deck_used(parameters.resolved_deck);
+    directory.log(std::string("vulnus ") + VULNUS_VERSION + " run " + line.deck);
+    for (const DeckOverride& override_ : line.overrides)
+      directory.log("  override " + override_.origin);
+    directory.log("run directory: " + directory.path());
+    return run_simulation(parameters, directory);
+  }
+  catch (const std::exception& error)
+  {
+    std::cerr << "vulnus: error: " << error.what() << '\n';
+    return 1;
+  }
+}
+
+int check_command(const CommandLine& line)
+{
+  try
+  {
+    read_run_parameters(line.deck, line.overrides);
+  }
+  catch (const DeckError& error)
+  {
+    report(error);
+    return 2;
+  }
+  std::cout << line.deck << ": deck OK\n";
+  return 0;
+}
+
+int print_parameters_command(const CommandLine& line)
+{
+  std::string listing;
+  try
+  {
+    listing = parameter_listing(line.deck, line.overrides);
+  }
+  catch (const DeckError& error)
+  {
+    for (const std::string& message : error.messages())
+      std::cerr << "vulnus: error: " << message << '\n';
+    return 2;
+  }
+  if (line.output_file.empty())
+  {
+    std::cout << listing;
+    return 0;
+  }
+  try
+  {
+    write_file_atomically(line.output_file, [&](std::ostream& out) { out << listing; });
+  }
+  catch (const std::exception& error)
+  {
+    std::cerr << "vulnus: error: " << error.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
+} // namespace vulnus::app

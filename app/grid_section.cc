@@ -1,0 +1,67 @@
+// Deck section `Grid`: the MPM background grid, shape functions, update scheme and the
+// boundary conditions on the faces of the grid domain.
+#include "app/deck_sections.h"
+
+namespace vulnus::app
+{
+namespace
+{
+const char* const face_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+
+mpm::FaceCondition face_condition(const std::string& text)
+{
+  if (text == "fixed")
+    return mpm::FaceCondition::fixed;
+  if (text == "roller")
+    return mpm::FaceCondition::roller;
+  return mpm::FaceCondition::free;
+}
+} // namespace
+
+void declare_grid_section(EntryTable& table)
+{
+  using namespace dealii;
+  table.enter("Grid");
+  table.declare("Domain min", "-0.025, -0.02, -0.025", point_pattern(),
+                "Lower corner x_min of the background grid domain, `x, y, z` [m]. The default "
+                "puts the x and z faces on the slab's side faces.");
+  table.declare("Domain max", "0.025, 0.03, 0.025", point_pattern(),
+                "Upper corner x_max of the background grid domain, `x, y, z` [m].");
+  table.declare("Cell size", "0.001", Patterns::Double(0.0),
+                "Edge length h of the cubic grid cells [m]; must be > 0. The paper uses 1 mm.");
+  table.declare("Shape function", "linear", Patterns::Selection("linear|gimp"),
+                "Grid shape functions: linear (tent) or gimp (generalized interpolation).");
+  table.declare("Update scheme", "MUSL", Patterns::Selection("USL|MUSL"),
+                "Stress update: USL (update stress last) or MUSL (modified USL, velocities "
+                "re-mapped to the grid before the stress update).");
+  table.enter("Boundary conditions");
+  for (unsigned int face = 0; face < 6; ++face)
+  {
+    const bool side = face < 2 || face > 3;
+    table.declare(face_names[face], side ? "fixed" : "free",
+                  Patterns::Selection("free|fixed|roller"),
+                  std::string("Condition on the domain face ") + face_names[face] +
+                      ": free, fixed (zero velocity) or roller (zero normal velocity). The paper "
+                      "fixes the x and z faces and leaves the y faces free.");
+  }
+  table.leave();
+  table.leave();
+}
+
+void parse_grid_section(dealii::ParameterHandler& prm, mpm::SceneParameters& scene)
+{
+  prm.enter_subsection("Grid");
+  scene.domain_min = get_point(prm, "Domain min");
+  scene.domain_max = get_point(prm, "Domain max");
+  scene.cell_size = prm.get_double("Cell size");
+  scene.shape_function =
+      prm.get("Shape function") == "gimp" ? mpm::ShapeFunction::gimp : mpm::ShapeFunction::linear;
+  scene.update_scheme =
+      prm.get("Update scheme") == "USL" ? mpm::UpdateScheme::usl : mpm::UpdateScheme::musl;
+  prm.enter_subsection("Boundary conditions");
+  for (unsigned int face = 0; face < 6; ++face)
+    scene.domain_faces[face] = face_condition(prm.get(face_names[face]));
+  prm.leave_subsection();
+  prm.leave_subsection();
+}
+} // namespace vulnus::app

@@ -1,0 +1,173 @@
+// Pure-MPM time loop with its outputs.
+#include "app/mpm_run.h"
+
+#include "app/csv_history.h"
+#include "app/mpm_history.h"
+#include "app/mpm_snapshot.h"
+#include "app/mpm_summary.h"
+#include "app/particle_output.h"
+#include "app/summary_json.h"
+#include "mpm/solver.h"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace vulnus::app
+{
+namespace
+{
+std::string format_seconds(const double s)
+{
+  std::ostringstream o;
+  if (s < 120)
+    o << std::fixed << std::setprecision(0) << s << " s";
+  else
+    o << std::fixed << std::setprecision(1) << s / 60 << " min";
+  return o.str();
+}
+
+void log_scene(const mpm::Solver& solver, RunDirectory& directory)
+{
+  const mpm::SceneParameters& scene = solver.scene();
+  const mpm::Particles& p = solver.points();
+  std::ostringstream o;
+  o << "MPM scene: " << p.size() << " points, cell size " << scene.cell_size << " m, grid "
+    << solver.background_grid().cells()[0] << " x " << solver.background_grid().cells()[1]
+    << " x " << solver.background_grid().cells()[2] << " cells, "
+    << (scene.shape_function == mpm::ShapeFunction::linear ? "linear" : "GIMP")
+    << " shape functions, " << (scene.update_scheme == mpm::UpdateScheme::musl ? "MUSL" : "USL")
+    << ", " << omp_get_max_threads() << " thread(s)";
+  directory.log(o.str());
+  for (std::size_t b = 0; b < p.n_bodies(); ++b)
+  {
+    const mpm::BodyParameters& body = scene.bodies[b];
+    const materials::Material& m = solver.body_material(b);
+    std::ostringstream line;
+    line << "  body " << body.name << ": " << p.end_of(b) - p.begin_of(b) << " points, material "
+         << body.material << " (" << m.model_name() << ")";
+    if (m.is_rigid())
+      line << ", rigid: no stress update, no time-step limit";
+    directory.log(line.str());
+  }
+  directory.log(std::string("  contact: ") +
+                (solver.uses_contact()
+                   ? "multi-velocity field, friction " + std::to_string(scene.contact.friction_coefficient)
+                   : "none (one body or disabled): no contact pass"));
+}
+} // namespace
+
+int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
+{
+  if (parameters.scene.n_threads > 0)
+    omp_set_num_threads(static_cast<int>(parameters.scene.n_threads));
+  const auto wall_start = std::chrono::steady_clock::now();
+  auto wall_seconds = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  };
+
+  mpm::Solver solver(parameters.scene);
+  log_scene(solver, directory);
+
+  RunTotals totals;
+  if (solver.projectile() >= 0)
+  {
+    const mpm::BodySummary b = solver.diagnostics().bodies[solver.projectile()];
+    totals.projectile_initial_speed = b.velocity.dot(solver.flight_direction());
+    totals.projectile_initial_kinetic_energy = b.kinetic_energy;
+  }
+
+  CsvHistory history(directory.file("history.csv"), mpm_history_columns());
+  ParticleOutput output(directory.path());
+  const double output_interval = parameters.output.particle_interval;
+  output.write(solver.time(), mpm_snapshot(solver));
+  double next_output = output_interval > 0 ? output_interval : parameters.scene.end_time * 2;
+  history.add_row(mpm_history_row(solver, solver.diagnostics()));
+
+  double last_progress = 0.0;
+  while (!solver.finished())
+  {
+    try
+    {
+      solver.advance();
+    }
+    catch (const mpm::BlowUp& e)
+    {
+      totals.completed = false;
+      totals.error = e.what();
+      directory.warn(std::string("blow-up: ") + e.what());
+      directory.warn("the last good state is the last particle output (t = " +
+                     std::to_string(output.n_outputs() > 0 ? next_output - output_interval : 0.0) +
+                     " s) in " + output.xdmf_path());
+      break;
+    }
+    if (solver.step_count() % parameters.output.history_interval == 0)
+      history.add_row(mpm_history_row(solver, solver.diagnostics()));
+    if (solver.time() >= next_output * (1 - 1e-12))
+    {
+      output.write(solver.time(), mpm_snapshot(solver));
+      next_output += output_interval;
+    }
+    const double wall = wall_seconds();
+    if (wall - last_progress >= 5.0)
+    {
+      last_progress = wall;
+      const double rate = solver.time() / wall; // simulated seconds per wall second
+      std::ostringstream o;
+      o << "t = " << std::scientific << std::setprecision(3) << solver.time() << " s, step "
+        << solver.step_count() << ", dt = " << solver.last_time_step() << " s, "
+        << solver.points().size() << " points, time left <= "
+        << format_seconds((parameters.scene.end_time - solver.time()) / rate);
+      directory.log(o.str());
+    }
+  }
+  totals.wall_seconds = wall_seconds();
+  const mpm::SceneDiagnostics final_state = solver.diagnostics();
+  if (totals.completed)
+  {
+    history.add_row(mpm_history_row(solver, final_state));
+    output.write(solver.time(), mpm_snapshot(solver));
+  }
+  history.flush();
+
+  if (solver.projectile() >= 0 && !solver.body_material(solver.projectile()).is_rigid())
+  {
+    const double ratio = solver.peak_von_mises_over_yield()[solver.projectile()];
+    if (ratio > 0.0 && ratio < 0.5)
+      totals.warnings.push_back("the projectile stayed far below yield (max von Mises / yield = " +
+                                std::to_string(ratio) +
+                                "): a rigid projectile (Model = rigid) gives the same wound at a "
+                                "much larger time step");
+  }
+  if (solver.removed_points() > 0)
+    totals.warnings.push_back(std::to_string(solver.removed_points()) +
+                              " points left the grid and were removed; their energy is booked "
+                              "as outflow");
+  for (const std::string& w : totals.warnings)
+    directory.warn(w);
+
+  const nlohmann::json summary = mpm_summary(solver, totals);
+  write_summary_json(directory.file("summary.json"), summary);
+
+  const mpm::PhaseTimes& t = solver.phase_times();
+  std::ostringstream o;
+  o << std::setprecision(4) << "done: " << solver.step_count() << " steps to t = " << solver.time()
+    << " s in " << totals.wall_seconds << " s wall, "
+    << summary["particle_steps_per_second"].get<double>() << " point-steps/s; phases (s): "
+    << "time step " << t.time_step << ", particle-to-grid " << t.particle_to_grid
+    << ", grid update " << t.grid_update << ", grid-to-particle " << t.grid_to_particle
+    << ", stress " << t.stress_update << ", checks " << t.checks_and_sorting;
+  directory.log(o.str());
+  std::ostringstream e;
+  e << std::setprecision(4) << "energy balance error " << summary["energy"]["balance_error"].get<double>()
+    << "; failed points: matrix " << summary["failed"]["matrix"] << ", fiber "
+    << summary["failed"]["fiber"] << ", total " << summary["failed"]["total"];
+  if (solver.projectile() >= 0)
+    e << "; bullet exit velocity " << summary["bullet"]["exit_velocity_m_s"].get<double>() << " m/s";
+  directory.log(e.str());
+  return totals.completed ? 0 : 1;
+}
+} // namespace vulnus::app

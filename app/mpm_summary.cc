@@ -1,0 +1,101 @@
+// Builds summary.json from the final MPM state.
+#include "app/mpm_summary.h"
+
+#include "app/mpm_history.h"
+#include "mpm/wound_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vulnus::app
+{
+namespace
+{
+nlohmann::json face_json(const mpm::FaceWound& w)
+{
+  return {{"equivalent_diameter_m", w.equivalent_diameter},
+          {"aspect_ratio", w.aspect_ratio},
+          {"major_axis_direction", {w.major_axis[0], w.major_axis[1], w.major_axis[2]}},
+          {"failed_points", w.n_points},
+          {"area_m2", w.area}};
+}
+} // namespace
+
+nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals)
+{
+  const mpm::Particles& p = solver.points();
+  const mpm::SceneDiagnostics d = solver.diagnostics();
+  const mpm::Vector3 axis = solver.flight_direction();
+  const int projectile = solver.projectile();
+
+  // The target: every deformable body other than the projectile.
+  std::vector<mpm::Vector3> x;
+  std::vector<double> volume;
+  std::vector<std::uint8_t> flags;
+  double entrance = std::numeric_limits<double>::max(), exit = -entrance;
+  for (std::size_t b = 0; b < p.n_bodies(); ++b)
+  {
+    if (static_cast<int>(b) == projectile || solver.body_material(b).is_rigid())
+      continue;
+    const double half_spacing = 0.5 * solver.scene().cell_size / solver.scene().bodies[b].particles_per_cell;
+    for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
+    {
+      x.push_back(p.reference_position[i]);
+      volume.push_back(p.reference_volume[i]);
+      flags.push_back(p.state[i].failure);
+      const double along = p.reference_position[i].dot(axis);
+      entrance = std::min(entrance, along - half_spacing);
+      exit = std::max(exit, along + half_spacing);
+    }
+  }
+  const mpm::WoundMetrics wound =
+    x.empty() ? mpm::WoundMetrics()
+              : mpm::compute_wound_metrics(x, volume, flags, axis, entrance, exit, solver.scene().cell_size);
+
+  nlohmann::json j;
+  j["completed"] = totals.completed;
+  if (!totals.completed)
+    j["error"] = totals.error;
+  j["particles"] = p.size();
+  j["fe_cells"] = 0;
+  j["steps"] = solver.step_count();
+  j["time_s"] = solver.time();
+  j["wall_seconds"] = totals.wall_seconds;
+  j["particle_steps_per_second"] =
+    totals.wall_seconds > 0 ? double(p.size()) * solver.step_count() / totals.wall_seconds : 0.0;
+  j["failed"] = {{"matrix", wound.counts[1]}, {"fiber", wound.counts[2]}, {"total", wound.counts[3]}};
+  j["failed_volume_m3"] = {{"matrix", wound.volumes[1]}, {"fiber", wound.volumes[2]}, {"total", wound.volumes[3]}};
+  j["entrance_wound"] = face_json(wound.entrance);
+  j["exit_wound"] = face_json(wound.exit);
+  j["tract"] = {{"depth_m", wound.tract_depth}, {"area_m2", wound.tract_area}};
+
+  nlohmann::json bullet = nlohmann::json::object();
+  if (projectile >= 0)
+  {
+    const mpm::BodySummary& b = d.bodies[projectile];
+    const double speed = b.velocity.dot(axis);
+    bullet["initial_velocity_m_s"] = totals.projectile_initial_speed;
+    bullet["exit_velocity_m_s"] = speed;
+    bullet["kinetic_energy_lost_J"] = totals.projectile_initial_kinetic_energy - b.kinetic_energy;
+    bullet["max_von_mises_over_yield"] = solver.peak_von_mises_over_yield()[projectile];
+    bullet["position_m"] = {b.centroid[0], b.centroid[1], b.centroid[2]};
+    bullet["rigid"] = solver.body_material(projectile).is_rigid();
+  }
+  j["bullet"] = bullet;
+
+  const double initial = solver.initial_energy();
+  j["energy"] = {{"initial_J", initial},
+                 {"kinetic_J", d.kinetic_energy},
+                 {"strain_J", d.strain_energy},
+                 {"potential_J", d.potential_energy},
+                 {"dissipated_J", d.dissipated_energy + solver.contact_dissipation()},
+                 {"dissipated_material_J", d.dissipated_energy},
+                 {"dissipated_contact_J", solver.contact_dissipation()},
+                 {"outflow_J", solver.removed_energy()},
+                 {"balance_error", initial > 0 ? (accounted_energy(solver, d) - initial) / initial : 0.0}};
+  j["removed_points"] = solver.removed_points();
+  j["warnings"] = totals.warnings;
+  return j;
+}
+} // namespace vulnus::app

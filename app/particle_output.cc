@@ -1,0 +1,239 @@
+// HDF5 + XDMF particle output (plain HDF5 C API, atomic files).
+#include "app/particle_output.h"
+
+#include "app/atomic_file.h"
+
+#include <hdf5.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace vulnus::app
+{
+namespace
+{
+unsigned int n_components(const ParticleSnapshot::FieldKind kind)
+{
+  switch (kind)
+  {
+  case ParticleSnapshot::FieldKind::vector:
+    return 3;
+  case ParticleSnapshot::FieldKind::tensor:
+    return 9;
+  default:
+    return 1;
+  }
+}
+
+/// Closes an HDF5 handle when it goes out of scope.
+class Handle
+{
+public:
+  Handle(const hid_t id, herr_t (*close)(hid_t), const std::string& what)
+      : id(id), close_function(close)
+  {
+    if (id < 0)
+      throw std::runtime_error("HDF5: cannot " + what);
+  }
+  ~Handle()
+  {
+    if (id >= 0)
+      close_function(id);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  operator hid_t() const { return id; }
+
+private:
+  hid_t id;
+  herr_t (*close_function)(hid_t);
+};
+
+void check(const herr_t status, const std::string& what)
+{
+  if (status < 0)
+    throw std::runtime_error("HDF5: cannot " + what);
+}
+
+void write_dataset(const hid_t file, const std::string& name, const std::size_t n_rows,
+                   const unsigned int n_columns, const hid_t type, const void* data)
+{
+  const hsize_t dims[2] = {static_cast<hsize_t>(n_rows), static_cast<hsize_t>(n_columns)};
+  const Handle space(H5Screate_simple(n_columns == 1 ? 1 : 2, dims, nullptr), H5Sclose,
+                     "create a data space for '" + name + "'");
+  const Handle set(
+      H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+      "create dataset '" + name + "'");
+  if (n_rows > 0)
+    check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write dataset '" + name + "'");
+}
+
+std::string dimensions(const std::size_t n, const unsigned int n_columns)
+{
+  return n_columns == 1 ? std::to_string(n) : std::to_string(n) + " " + std::to_string(n_columns);
+}
+
+std::string data_item(const std::string& file, const std::string& dataset, const std::size_t n,
+                      const unsigned int n_columns, const bool integer)
+{
+  std::ostringstream out;
+  out << "<DataItem Dimensions=\"" << dimensions(n, n_columns) << "\" NumberType=\""
+      << (integer ? "Int" : "Float") << "\" Precision=\"" << (integer ? 4 : 8)
+      << "\" Format=\"HDF\">" << file << ":/" << dataset << "</DataItem>";
+  return out.str();
+}
+} // namespace
+
+ParticleSnapshot::ParticleSnapshot(const std::size_t n_particles)
+    : n(n_particles), position_values(3 * n_particles, 0.0)
+{
+}
+
+void ParticleSnapshot::set_positions(const double* xyz)
+{
+  position_values.assign(xyz, xyz + 3 * n);
+}
+
+ParticleSnapshot::Field& ParticleSnapshot::new_field(const std::string& name, const FieldKind kind)
+{
+  if (name.empty() || name == "positions" || name.find_first_of("/<>&\"") != std::string::npos)
+    throw std::invalid_argument("particle field name '" + name +
+                                "' is empty, reserved or contains / < > & \"");
+  for (const Field& field : field_list)
+    if (field.name == name)
+      throw std::invalid_argument("particle field '" + name + "' added twice");
+  field_list.push_back(Field{name, kind, {}, {}});
+  return field_list.back();
+}
+
+void ParticleSnapshot::add_scalar(const std::string& name, const double* values)
+{
+  new_field(name, FieldKind::scalar).values.assign(values, values + n);
+}
+
+void ParticleSnapshot::add_vector(const std::string& name, const double* values)
+{
+  new_field(name, FieldKind::vector).values.assign(values, values + 3 * n);
+}
+
+void ParticleSnapshot::add_symmetric_tensor(const std::string& name, const double* voigt)
+{
+  std::vector<double>& full = new_field(name, FieldKind::tensor).values;
+  full.resize(9 * n);
+  // Voigt xx yy zz xy yz xz -> row-major xx xy xz / yx yy yz / zx zy zz.
+  static const unsigned int voigt_of[9] = {0, 3, 5, 3, 1, 4, 5, 4, 2};
+  for (std::size_t i = 0; i < n; ++i)
+    for (unsigned int c = 0; c < 9; ++c)
+      full[9 * i + c] = voigt[6 * i + voigt_of[c]];
+}
+
+void ParticleSnapshot::add_tensor(const std::string& name, const double* values)
+{
+  new_field(name, FieldKind::tensor).values.assign(values, values + 9 * n);
+}
+
+void ParticleSnapshot::add_integer(const std::string& name, const std::int32_t* values)
+{
+  new_field(name, FieldKind::integer).integers.assign(values, values + n);
+}
+
+void write_particle_hdf5(const std::string& path, const double time,
+                         const ParticleSnapshot& snapshot)
+{
+  // Report errors through exceptions, not HDF5's stack dump on stderr.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+                    "create file '" + path + "'");
+  {
+    const Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar data space");
+    const Handle attribute(
+        H5Acreate2(file, "time", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+        "create attribute 'time' in '" + path + "'");
+    check(H5Awrite(attribute, H5T_NATIVE_DOUBLE, &time), "write attribute 'time'");
+  }
+  const std::size_t n = snapshot.n_particles();
+  write_dataset(file, "positions", n, 3, H5T_NATIVE_DOUBLE, snapshot.positions().data());
+  for (const ParticleSnapshot::Field& field : snapshot.fields())
+    if (field.kind == ParticleSnapshot::FieldKind::integer)
+      write_dataset(file, field.name, n, 1, H5T_NATIVE_INT32, field.integers.data());
+    else
+      write_dataset(file, field.name, n, n_components(field.kind), H5T_NATIVE_DOUBLE,
+                    field.values.data());
+  check(H5Fflush(file, H5F_SCOPE_LOCAL), "flush '" + path + "'");
+}
+
+ParticleOutput::ParticleOutput(const std::string& directory, const std::string& base)
+    : directory(directory), base(base)
+{
+}
+
+std::string ParticleOutput::xdmf_path() const
+{
+  return (std::filesystem::path(directory) / (base + ".xdmf")).string();
+}
+
+std::string ParticleOutput::write(const double time, const ParticleSnapshot& snapshot)
+{
+  char number[16];
+  std::snprintf(number, sizeof(number), "%05u", n_outputs());
+  const std::string file_name = base + "_" + number + ".h5";
+  const std::string path = (std::filesystem::path(directory) / file_name).string();
+  write_file_atomically_by_name(path, [&](const std::string& tmp)
+                                { write_particle_hdf5(tmp, time, snapshot); });
+
+  Record record{time, file_name, snapshot.n_particles(), {}};
+  for (const ParticleSnapshot::Field& field : snapshot.fields())
+    record.fields.push_back(FieldRecord{field.name, field.kind});
+  records.push_back(record);
+  write_xdmf();
+  return path;
+}
+
+void ParticleOutput::write_xdmf() const
+{
+  write_file_atomically(
+      xdmf_path(),
+      [&](std::ostream& out)
+      {
+        out << "<?xml version=\"1.0\" ?>\n"
+            << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+            << "<Xdmf Version=\"3.0\">\n"
+            << "  <Domain>\n"
+            << "    <Grid Name=\"" << base
+            << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+        for (const Record& record : records)
+        {
+          const std::size_t n = record.n_particles;
+          out << std::setprecision(std::numeric_limits<double>::max_digits10);
+          out << "      <Grid Name=\"" << record.file_name << "\" GridType=\"Uniform\">\n"
+              << "        <Time Value=\"" << record.time << "\"/>\n"
+              << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
+              << "\" NodesPerElement=\"1\"/>\n"
+              << "        <Geometry GeometryType=\"XYZ\">\n"
+              << "          " << data_item(record.file_name, "positions", n, 3, false) << "\n"
+              << "        </Geometry>\n";
+          for (const FieldRecord& field : record.fields)
+          {
+            const char* type = field.kind == ParticleSnapshot::FieldKind::vector   ? "Vector"
+                               : field.kind == ParticleSnapshot::FieldKind::tensor ? "Tensor"
+                                                                                   : "Scalar";
+            out << "        <Attribute Name=\"" << field.name << "\" AttributeType=\"" << type
+                << "\" Center=\"Node\">\n"
+                << "          "
+                << data_item(record.file_name, field.name, n, n_components(field.kind),
+                             field.kind == ParticleSnapshot::FieldKind::integer)
+                << "\n"
+                << "        </Attribute>\n";
+          }
+          out << "      </Grid>\n";
+        }
+        out << "    </Grid>\n"
+            << "  </Domain>\n"
+            << "</Xdmf>\n";
+      });
+}
+} // namespace vulnus::app

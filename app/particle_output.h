@@ -1,0 +1,108 @@
+// Particle output as HDF5 + XDMF for ParaView: one HDF5 file per output time
+// (`particles_NNNNN.h5`: positions and named fields) written atomically, and one XDMF time
+// series (`particles.xdmf`, Polyvertex topology, Temporal collection) rewritten atomically
+// after each output so that ParaView can open it at any moment. Plain HDF5 C API.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vulnus::app
+{
+/// The particle set at one output time: positions and named per-particle fields, copied in.
+class ParticleSnapshot
+{
+public:
+  enum class FieldKind
+  {
+    scalar, ///< n values, double
+    vector, ///< n x 3, double
+    tensor, ///< n x 9, double, row-major (symmetric tensors are stored expanded)
+    integer ///< n values, int32 (failure flag, material id)
+  };
+
+  struct Field
+  {
+    std::string name;
+    FieldKind kind;
+    std::vector<double> values;         ///< scalar, vector, tensor
+    std::vector<std::int32_t> integers; ///< integer
+  };
+
+  explicit ParticleSnapshot(std::size_t n_particles);
+
+  std::size_t n_particles() const { return n; }
+
+  /// n x 3 coordinates, interleaved x y z (an array of Eigen::Vector3d can be passed as
+  /// `positions[0].data()`).
+  void set_positions(const double* xyz);
+  void add_scalar(const std::string& name, const double* values);
+  /// n x 3, interleaved.
+  void add_vector(const std::string& name, const double* values);
+  /// n x 6 in Voigt order xx yy zz xy yz xz; stored as a full 3 x 3 tensor.
+  void add_symmetric_tensor(const std::string& name, const double* voigt);
+  /// n x 9 row-major (an array of symmetric Eigen::Matrix3d can be passed directly).
+  void add_tensor(const std::string& name, const double* values);
+  void add_integer(const std::string& name, const std::int32_t* values);
+
+  /// Integer field from any integer type (e.g. std::uint8_t failure flags).
+  template <class Integer> void add_integer_from(const std::string& name, const Integer* values)
+  {
+    std::vector<std::int32_t> converted(n);
+    for (std::size_t i = 0; i < n; ++i)
+      converted[i] = static_cast<std::int32_t>(values[i]);
+    add_integer(name, converted.data());
+  }
+
+  const std::vector<double>& positions() const { return position_values; }
+  const std::vector<Field>& fields() const { return field_list; }
+
+private:
+  Field& new_field(const std::string& name, FieldKind kind);
+
+  std::size_t n;
+  std::vector<double> position_values;
+  std::vector<Field> field_list;
+};
+
+class ParticleOutput
+{
+public:
+  /// Outputs go to `directory` (must exist) as `<base>_NNNNN.h5` and `<base>.xdmf`.
+  explicit ParticleOutput(const std::string& directory, const std::string& base = "particles");
+
+  /// Write the snapshot at `time` (s): the HDF5 file, then the XDMF series. Returns the path
+  /// of the HDF5 file. Throws std::runtime_error if a file cannot be written.
+  std::string write(double time, const ParticleSnapshot& snapshot);
+
+  unsigned int n_outputs() const { return static_cast<unsigned int>(records.size()); }
+  std::string xdmf_path() const;
+
+private:
+  struct FieldRecord
+  {
+    std::string name;
+    ParticleSnapshot::FieldKind kind;
+  };
+  struct Record
+  {
+    double time;
+    std::string file_name; ///< relative to the directory
+    std::size_t n_particles;
+    std::vector<FieldRecord> fields;
+  };
+
+  void write_xdmf() const;
+
+  std::string directory;
+  std::string base;
+  std::vector<Record> records;
+};
+
+/// Write one snapshot as an HDF5 file at `path` (not atomic by itself): datasets
+/// `/positions` (n x 3), one dataset per field named after it, and the attribute `time` on
+/// the root group.
+void write_particle_hdf5(const std::string& path, double time, const ParticleSnapshot& snapshot);
+} // namespace vulnus::app

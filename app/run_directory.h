@@ -1,0 +1,44 @@
+// The run directory of one `vulnus run`: created on demand, holds deck_used.prm (every
+// parameter as resolved), log.txt (a tee of the terminal messages) and the outputs.
+#pragma once
+
+#include <fstream>
+#include <functional>
+#include <mutex>
+#include <string>
+
+namespace vulnus::app
+{
+/// `runs/<deck stem>` for a deck path such as `inputs/paper/anisotropic_150ms.prm`.
+std::string default_run_directory(const std::string& deck_path);
+
+class RunDirectory
+{
+public:
+  /// Create `path` (and its parents) and open log.txt for appending. Throws
+  /// std::runtime_error naming the directory if it cannot be created.
+  explicit RunDirectory(const std::string& path);
+
+  const std::string& path() const { return directory; }
+
+  /// `path()/name`.
+  std::string file(const std::string& name) const;
+
+  /// Write deck_used.prm atomically.
+  void write_deck_used(const std::string& resolved_deck) const;
+
+  /// Print a line on the terminal (stdout) and append it to log.txt. Thread-safe.
+  void log(const std::string& line);
+
+  /// Same as log() but on stderr, prefixed with "warning: ".
+  void warn(const std::string& line);
+
+  /// log() as a callable, for code that must not depend on this class.
+  std::function<void(const std::string&)> logger();
+
+private:
+  std::string directory;
+  std::ofstream log_file;
+  std::mutex log_mutex;
+};
+} // namespace vulnus::app
