@@ -5,23 +5,32 @@
 
 #include <omp.h>
 
+#include <cmath>
+
 namespace vulnus::mpm
 {
 void mark_active_nodes(const Particles& particles, const TransferSettings& settings, Grid& grid)
 {
   grid.clear_active_nodes();
-  with_shape(settings.shape, [&](auto shape_constant) {
-    constexpr ShapeFunction shape = decltype(shape_constant)::value;
-    for (std::size_t b = 0; b < particles.n_bodies(); ++b)
-    {
-      const double lp = settings.half_size_cells[b];
-      const long begin = particles.begin_of(b), end = particles.end_of(b);
+  // Marks the n^3 nodes of each point's stencil from its first node; no weights needed.
+  const int n = nodes_per_axis(settings.shape);
+  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+  {
+    const double lp = settings.shape == ShapeFunction::linear ? 0.0 : settings.half_size_cells[b];
+    const long begin = particles.begin_of(b), end = particles.end_of(b);
 #pragma omp parallel for schedule(static)
-      for (long p = begin; p < end; ++p)
-        for_each_node<shape>(grid, lp, particles.position[p],
-                             [&](const std::int64_t key, double, const Vector3&) { grid.mark(key); });
+    for (long p = begin; p < end; ++p)
+    {
+      const Vector3 s = grid.to_cell_units(particles.position[p]);
+      const int i0 = static_cast<int>(std::floor(s[0] - lp));
+      const int j0 = static_cast<int>(std::floor(s[1] - lp));
+      const int k0 = static_cast<int>(std::floor(s[2] - lp));
+      for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i)
+            grid.mark(grid.node_key(i0 + i, j0 + j, k0 + k));
     }
-  });
+  }
   grid.number_active_nodes();
 }
 
