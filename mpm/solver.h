@@ -18,6 +18,7 @@
 #include "mpm/transfer_settings.h"
 
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -76,6 +77,12 @@ public:
   const materials::Material& body_material(std::size_t b) const { return *materials_of_body[b]; }
 
   SceneDiagnostics diagnostics() const;
+
+  /// Writes the whole evolving state (points, time, step, rigid velocities, accumulated
+  /// energies) in binary; restore() on a solver built from the same scene continues the run
+  /// bit for bit (same thread count). Throws std::runtime_error on a mismatch or a short file.
+  void save(std::ostream& out) const;
+  void restore(std::istream& in);
   /// Index of the projectile body, or -1.
   int projectile() const { return projectile_body; }
   /// Axis of the projectile's flight (unit), or +y when there is no projectile.

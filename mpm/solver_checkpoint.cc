@@ -1,0 +1,150 @@
+// Binary checkpoint of the MPM solver state: a tagged header, the scene's body layout (to
+// refuse a checkpoint of another scene), every point array and the accumulated scalars.
+#include "mpm/solver.h"
+
+#include <cstring>
+#include <istream>
+#include <ostream>
+#include <type_traits>
+
+namespace vulnus::mpm
+{
+namespace
+{
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '1'};
+
+template <class T>
+void put(std::ostream& out, const T& value)
+{
+  static_assert(std::is_standard_layout_v<T>); // fixed-size Eigen types and PODs
+  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+template <class T>
+void put_vector(std::ostream& out, const std::vector<T>& values)
+{
+  static_assert(std::is_standard_layout_v<T>); // fixed-size Eigen types and PODs
+  put(out, static_cast<std::uint64_t>(values.size()));
+  out.write(reinterpret_cast<const char*>(values.data()), sizeof(T) * values.size());
+}
+
+template <class T>
+void get(std::istream& in, T& value)
+{
+  in.read(reinterpret_cast<char*>(&value), sizeof(T));
+  if (!in)
+    throw std::runtime_error("checkpoint is truncated");
+}
+
+template <class T>
+void get_vector(std::istream& in, std::vector<T>& values)
+{
+  std::uint64_t n = 0;
+  get(in, n);
+  if (n > (std::uint64_t(1) << 34))
+    throw std::runtime_error("checkpoint is corrupt (array length " + std::to_string(n) + ")");
+  values.resize(n);
+  in.read(reinterpret_cast<char*>(values.data()), sizeof(T) * n);
+  if (!in)
+    throw std::runtime_error("checkpoint is truncated");
+}
+} // namespace
+
+void Solver::save(std::ostream& out) const
+{
+  out.write(magic, sizeof(magic));
+  put(out, static_cast<std::uint64_t>(parameters.bodies.size()));
+  put_vector(out, particles.body_begin);
+  put_vector(out, particles.position);
+  put_vector(out, particles.reference_position);
+  put_vector(out, particles.velocity);
+  put_vector(out, particles.deformation_gradient);
+  put_vector(out, particles.stress);
+  put_vector(out, particles.mass);
+  put_vector(out, particles.reference_volume);
+  put_vector(out, particles.fiber_direction);
+  put_vector(out, particles.state);
+  put_vector(out, particles.energy_density);
+  put_vector(out, particles.dissipated_density);
+  put_vector(out, particles.wave_speed);
+  put_vector(out, particles.id);
+  put_vector(out, grid_settings.rigid_velocity);
+  put_vector(out, peak_yield_ratio);
+  put(out, current_time);
+  put(out, time_step);
+  put(out, static_cast<std::uint64_t>(n_steps));
+  put(out, accumulated_contact_dissipation);
+  put(out, energy_at_start);
+  put(out, static_cast<std::uint64_t>(n_removed));
+  put(out, outflow_energy);
+  put(out, outflow_momentum);
+  out.write(magic, sizeof(magic)); // trailer: a complete checkpoint ends with the tag
+  if (!out)
+    throw std::runtime_error("checkpoint could not be written");
+}
+
+void Solver::restore(std::istream& in)
+{
+  char tag[sizeof(magic)];
+  in.read(tag, sizeof(tag));
+  if (!in || std::memcmp(tag, magic, sizeof(magic)) != 0)
+    throw std::runtime_error("not a vulnus MPM checkpoint (bad header)");
+  std::uint64_t n_bodies = 0;
+  get(in, n_bodies);
+  if (n_bodies != parameters.bodies.size())
+    throw std::runtime_error("checkpoint has " + std::to_string(n_bodies) + " bodies, the deck " +
+                             std::to_string(parameters.bodies.size()) + ": it belongs to another scene");
+  Particles loaded;
+  get_vector(in, loaded.body_begin);
+  get_vector(in, loaded.position);
+  get_vector(in, loaded.reference_position);
+  get_vector(in, loaded.velocity);
+  get_vector(in, loaded.deformation_gradient);
+  get_vector(in, loaded.stress);
+  get_vector(in, loaded.mass);
+  get_vector(in, loaded.reference_volume);
+  get_vector(in, loaded.fiber_direction);
+  get_vector(in, loaded.state);
+  get_vector(in, loaded.energy_density);
+  get_vector(in, loaded.dissipated_density);
+  get_vector(in, loaded.wave_speed);
+  get_vector(in, loaded.id);
+  std::vector<Vector3> rigid_velocity;
+  std::vector<double> peak;
+  get_vector(in, rigid_velocity);
+  get_vector(in, peak);
+  double time = 0, step = 0, contact = 0, energy = 0, outflow = 0;
+  std::uint64_t steps = 0, removed = 0;
+  Vector3 outflow_p;
+  get(in, time);
+  get(in, step);
+  get(in, steps);
+  get(in, contact);
+  get(in, energy);
+  get(in, removed);
+  get(in, outflow);
+  get(in, outflow_p);
+  in.read(tag, sizeof(tag));
+  if (!in || std::memcmp(tag, magic, sizeof(magic)) != 0)
+    throw std::runtime_error("checkpoint is incomplete (no trailer)");
+  const std::size_t n = loaded.position.size();
+  if (loaded.body_begin.size() != n_bodies + 1 || loaded.body_begin.back() != n ||
+      loaded.state.size() != n || loaded.id.size() != n || rigid_velocity.size() != n_bodies ||
+      peak.size() != n_bodies)
+    throw std::runtime_error("checkpoint is inconsistent (array sizes differ)");
+
+  particles = std::move(loaded);
+  grid_settings.rigid_velocity = rigid_velocity;
+  kinematics.rigid_velocity = rigid_velocity;
+  peak_yield_ratio = peak;
+  current_time = time;
+  time_step = step;
+  n_steps = steps;
+  accumulated_contact_dissipation = contact;
+  energy_at_start = energy;
+  n_removed = removed;
+  outflow_energy = outflow;
+  outflow_momentum = outflow_p;
+  volumetric_rate.assign(particles.size(), 0.0);
+}
+} // namespace vulnus::mpm
