@@ -138,6 +138,13 @@ CommandLine parse_command_line(const int argc, const char* const* argv)
     line.command = CommandLine::Command::point;
     line.arguments.assign(arguments.begin() + 1, arguments.end());
   }
+  else if (command == "compare")
+  {
+    line.command = CommandLine::Command::compare;
+    line.arguments.assign(arguments.begin() + 1, arguments.end());
+    if (line.arguments.size() != 2)
+      throw CommandLineError("'vulnus compare' needs exactly two run directories (RUN_A RUN_B)");
+  }
   else
     throw CommandLineError("unknown command '" + command + "'");
   return line;
@@ -154,7 +161,12 @@ std::string usage_text()
          "  vulnus --print-parameters [FILE] [--deck DECK.prm] [--set ...]\n"
          "      Write every parameter with its default, allowed values and documentation,\n"
          "      as a valid deck (to FILE or the terminal); with --deck, as resolved from it.\n"
-         "  vulnus point ...      Evaluate one material point (see `vulnus point --help`).\n"
+         "  vulnus point DECK.prm --material NAME --output OUT.csv\n"
+         "        (--deformation F.csv | --path NAME --max VALUE --steps N) [--fiber x,y,z]\n"
+         "      Drive one material point of the deck's material through a deformation history.\n"
+         "  vulnus compare RUN_A RUN_B\n"
+         "      Both summaries side by side with differences, and the failure fields of the\n"
+         "      points the two runs share.\n"
          "  vulnus --help         This text.\n"
          "  vulnus --version      The version.\n"
          "Exit status: 0 success, 1 failure during a run, 2 bad command line or deck.\n";

@@ -25,6 +25,7 @@ struct CommandLine
     check,            ///< vulnus check DECK [--set ...]: validate only
     print_parameters, ///< vulnus --print-parameters [FILE] [--deck DECK] [--set ...]
     point,            ///< vulnus point ... (arguments in `arguments`)
+    compare,          ///< vulnus compare RUN_A RUN_B (the two in `arguments`)
     help,
     version
   };
@@ -35,7 +36,7 @@ struct CommandLine
   /// --set overrides, then --output and --threads as overrides of Output/Directory and
   /// Run/Threads, in that order.
   std::vector<DeckOverride> overrides;
-  std::vector<std::string> arguments; ///< point: everything after the subcommand
+  std::vector<std::string> arguments; ///< point: everything after it; compare: the two runs
 };
 
 /// Throws CommandLineError for an unknown subcommand or option, a missing argument, or

@@ -2,6 +2,8 @@
 // subcommands (app/commands.h). Exit status 0 success, 1 run failure, 2 bad usage or deck.
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/compare_runs.h"
+#include "app/point_command.h"
 
 #include <exception>
 #include <iostream>
@@ -21,9 +23,9 @@ int main(int argc, char** argv)
     case CommandLine::Command::print_parameters:
       return print_parameters_command(line);
     case CommandLine::Command::point:
-      // LEAD: wire `vulnus point` here.
-      std::cerr << "vulnus: error: 'vulnus point' is not available yet\n";
-      return 2;
+      return point_command(line.arguments);
+    case CommandLine::Command::compare:
+      return compare_runs(line.arguments[0], line.arguments[1], std::cout, std::cerr);
     case CommandLine::Command::help:
       std::cout << usage_text();
       return 0;

@@ -1,0 +1,102 @@
+"""Reading one vulnus run directory: summary.json, history.csv, particles_NNNNN.h5 and the
+entries of deck_used.prm. Every reader returns None when its file is missing, so callers
+can skip a picture instead of failing."""
+import csv
+import json
+import os
+import re
+
+import numpy as np
+
+PARTICLE_FILE = re.compile(r"^particles_(\d+)\.h5$")
+
+
+def read_deck(path):
+    """Entries of a deal.II ParameterHandler deck as {'Section/Sub/Entry': 'value'}."""
+    entries, sections = {}, []
+    with open(path, encoding="utf-8") as deck:
+        for raw in deck:
+            line = raw.split("#", 1)[0].strip()
+            if line.startswith("subsection "):
+                sections.append(line[len("subsection "):].strip())
+            elif line == "end":
+                if sections:
+                    sections.pop()
+            elif line.startswith("set ") and "=" in line:
+                key, value = line[4:].split("=", 1)
+                entries["/".join(sections + [key.strip()])] = value.strip()
+    return entries
+
+
+class RunDirectory:
+    """The files of a run directory written by `vulnus run`."""
+
+    def __init__(self, path):
+        self.path = path
+
+    def file(self, name):
+        return os.path.join(self.path, name)
+
+    def has(self, name):
+        return os.path.isfile(self.file(name))
+
+    def summary(self):
+        if not self.has("summary.json"):
+            return None
+        with open(self.file("summary.json"), encoding="utf-8") as f:
+            return json.load(f)
+
+    def history(self):
+        """history.csv as {column: numpy array}, or None."""
+        if not self.has("history.csv"):
+            return None
+        with open(self.file("history.csv"), encoding="utf-8", newline="") as f:
+            rows = list(csv.reader(f))
+        if len(rows) < 2:
+            return None
+        header, values = rows[0], np.array(rows[1:], dtype=float)
+        return {name: values[:, c] for c, name in enumerate(header)}
+
+    def deck(self):
+        return read_deck(self.file("deck_used.prm")) if self.has("deck_used.prm") else {}
+
+    def particle_files(self):
+        """particles_NNNNN.h5 in output order."""
+        if not os.path.isdir(self.path):
+            return []
+        numbered = [(int(m.group(1)), name) for name in os.listdir(self.path)
+                    for m in [PARTICLE_FILE.match(name)] if m]
+        return [self.file(name) for _, name in sorted(numbered)]
+
+
+def load_particles(path, fields=("positions", "reference_position", "failure", "material_id")):
+    """The named datasets of one particle file (those present) and its time (or None)."""
+    import h5py  # only the particle pictures need it
+
+    data = {}
+    with h5py.File(path, "r") as f:
+        for name in fields:
+            if name in f:
+                data[name] = f[name][()]
+        data["time"] = float(f.attrs["time"]) if "time" in f.attrs else None
+    return data
+
+
+def cell_size(deck, default=1e-3):
+    """Grid/Cell size of the deck (m); `default` when absent."""
+    try:
+        return float(deck["Grid/Cell size"])
+    except (KeyError, ValueError):
+        return default
+
+
+def target_body_index(deck):
+    """Index (material_id) of the tissue body: the body named 'slab', else the first body
+    that is not a projectile, else 0."""
+    bodies = [b.strip() for b in deck.get("Scene/Bodies", "").split(",") if b.strip()]
+    if "slab" in bodies:
+        return bodies.index("slab")
+    for index, body in enumerate(bodies):
+        if deck.get("Body %s/Projectile" % body, "false").lower() != "true":
+            return index
+    return 0
