@@ -1,0 +1,68 @@
+// Explicit central-difference step (velocity-Verlet form) with the lumped mass:
+//   v_{n+1/2} = v_n + dt/2 a_n, u_{n+1} = u_n + dt v_{n+1/2},
+//   a_{n+1} = M^{-1} (f_ext(t_{n+1}) - f_int(u_{n+1})), v_{n+1} = v_{n+1/2} + dt/2 a_{n+1};
+// Dirichlet dofs follow their prescribed velocity with u_{n+1} = u_n + dt (v_n + v_{n+1})/2.
+#include "fem/far_field_data.h"
+
+#include <deal.II/base/mpi.h>
+
+namespace vulnus::fem
+{
+using namespace dealii;
+
+void FarFieldSolver::evaluate_explicit_forces(const double t)
+{
+  Data& d = *data;
+  d.ghosted = d.displacement;
+  d.residual = 0.0;
+  const EvaluationSums sums = d.evaluate_internal_forces(d.ghosted, &d.residual);
+  d.assemble_external_forces(t, &d.residual);
+  d.commit_states();
+  d.last_sums = sums;
+  d.dissipated_energy += Utilities::MPI::sum(sums.dissipated, d.comm);
+  d.acceleration = d.residual;
+  d.acceleration.scale(d.inverse_mass);
+}
+
+void FarFieldSolver::advance_explicit(const double dt)
+{
+  Data& d = *data;
+  const double t_new = d.time + dt;
+  const std::size_t n_dirichlet = d.dirichlet_dofs.size();
+  std::vector<double> u_old(n_dirichlet), v_old(n_dirichlet), v_new(n_dirichlet);
+  for (std::size_t k = 0; k < n_dirichlet; ++k)
+  {
+    const auto i = d.dirichlet_dofs[k].dof;
+    u_old[k] = d.displacement(i);
+    v_old[k] = d.velocity(i);
+    v_new[k] = d.dirichlet_velocity(d.dirichlet_dofs[k], t_new);
+  }
+
+  d.velocity.add(0.5 * dt, d.acceleration);
+  d.displacement.add(dt, d.velocity);
+  for (std::size_t k = 0; k < n_dirichlet; ++k)
+    d.displacement(d.dirichlet_dofs[k].dof) = u_old[k] + 0.5 * dt * (v_old[k] + v_new[k]);
+  d.displacement.compress(VectorOperation::insert);
+  d.hanging_constraints.distribute(d.displacement);
+
+  d.time = t_new;
+  evaluate_explicit_forces(t_new);
+
+  d.velocity.add(0.5 * dt, d.acceleration);
+  for (std::size_t k = 0; k < n_dirichlet; ++k)
+  {
+    const auto i = d.dirichlet_dofs[k].dof;
+    d.velocity(i) = v_new[k];
+    d.acceleration(i) = (v_new[k] - v_old[k]) / dt;
+  }
+  d.velocity.compress(VectorOperation::insert);
+  d.acceleration.compress(VectorOperation::insert);
+  d.hanging_constraints.distribute(d.velocity);
+  d.hanging_constraints.distribute(d.acceleration);
+  ++d.step;
+
+  const double power = d.external_power();
+  d.external_work += 0.5 * dt * (d.last_power + power);
+  d.last_power = power;
+}
+} // namespace vulnus::fem

@@ -1,0 +1,143 @@
+// Internal state of FarFieldSolver (deal.II objects, vectors, quadrature-point history),
+// shared by the solver's implementation files only; not part of the public interface.
+#pragma once
+
+#include "fem/far_field_solver.h"
+#include "materials/material.h"
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <vector>
+
+namespace vulnus::fem
+{
+/// Where the velocity of a Dirichlet dof comes from.
+enum class DirichletSource : unsigned char
+{
+  zero,          ///< fixed or roller
+  face_constant, ///< FaceParameters value * g(t) of face `index`
+  face_field,    ///< field set by set_face_velocity_field on face `index`
+  interface      ///< interface node `index` (velocity_driven)
+};
+
+struct DirichletDof
+{
+  dealii::types::global_dof_index dof;
+  unsigned int component;
+  DirichletSource source;
+  unsigned int index;
+  dealii::Point<3> position;
+};
+
+/// Sums of one pass over the quadrature points (local to this rank).
+struct EvaluationSums
+{
+  double strain_energy = 0.0;
+  double dissipated = 0.0;
+};
+
+/// Matrix, preconditioner and work vectors of the implicit integrators
+/// (fem/implicit_integrator.cc).
+struct ImplicitData;
+
+struct FarFieldSolver::Data
+{
+  using Vector = dealii::TrilinosWrappers::MPI::Vector;
+
+  Data(const FeSceneParameters& parameters, MPI_Comm communicator);
+
+  FeSceneParameters prm;
+  MPI_Comm comm;
+  std::unique_ptr<materials::Material> material;
+
+  dealii::parallel::distributed::Triangulation<3> triangulation;
+  dealii::FESystem<3> fe;
+  dealii::DoFHandler<3> dof_handler;
+  dealii::MappingQ1<3> mapping;
+  dealii::QGauss<3> quadrature;
+  dealii::QGauss<2> face_quadrature;
+
+  dealii::IndexSet owned_dofs;
+  dealii::IndexSet relevant_dofs;
+  dealii::AffineConstraints<double> hanging_constraints; ///< hanging nodes only
+  /// Hanging nodes plus homogeneous Dirichlet rows: constraints of Newton increments.
+  dealii::AffineConstraints<double> increment_constraints;
+  std::vector<DirichletDof> dirichlet_dofs; ///< owned only
+  /// Owned (dof, component) pairs on each boundary id.
+  std::array<std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>,
+             n_slab_faces + 1>
+      face_dofs;
+  std::array<TimeVectorFunction, n_slab_faces> face_fields;
+
+  std::vector<NodeRecord> owned_nodes;
+  std::vector<NodeRecord> interface_nodes;
+  std::vector<dealii::Tensor<1, 3>> interface_velocity_targets;
+  std::vector<dealii::Tensor<1, 3>> interface_forces;
+
+  // Owned vectors: displacement, velocity, acceleration, lumped mass (condensed), inverse
+  // lumped mass (zero on constrained dofs), internal and external forces without constraints.
+  Vector displacement, velocity, acceleration;
+  Vector lumped_mass, inverse_mass;
+  Vector internal_force_raw, external_force_raw;
+  Vector residual; ///< explicit: condensed f_ext - f_int
+  // Ghosted copy for cell loops.
+  Vector ghosted;
+
+  unsigned int n_q_points = 0;
+  std::vector<materials::PointState> committed_states;
+  std::vector<materials::PointState> trial_states;
+  std::vector<Eigen::Vector3d> fiber_directions; ///< per quadrature point
+  std::vector<dealii::Tensor<2, 3>> cell_stress; ///< by active cell index
+  std::vector<unsigned char> cell_failure;       ///< max flag over the cell's points
+  std::vector<double> cell_wave_speed;           ///< m/s
+  std::vector<double> cell_size;                 ///< smallest vertex distance / degree, m
+
+  EvaluationSums last_sums;
+  double time = 0.0;
+  unsigned int step = 0;
+  double external_work = 0.0;
+  double last_power = 0.0;
+  double dissipated_energy = 0.0;
+  unsigned long long n_failed_points = 0;
+  unsigned long long last_warned_failures = 0;
+  ImplicitStepStatistics implicit_statistics;
+  std::shared_ptr<ImplicitData>
+      implicit; ///< matrix and preconditioner (shared_ptr: incomplete type)
+
+  std::vector<dealii::XDMFEntry> xdmf_entries;
+  unsigned int n_outputs = 0;
+
+  bool is_implicit() const { return prm.integrator != TimeIntegrator::central_difference; }
+
+  /// Velocity of a Dirichlet dof at time t.
+  double dirichlet_velocity(const DirichletDof& d, double t) const;
+
+  /// One pass over the locally owned cells at the displacement `u` (ghosted): updates the
+  /// trial states from the committed ones, the cell stress, failure and wave speed, and adds
+  /// f_int to internal_force_raw (zeroed first) and, when condensed is non-null, -f_int to
+  /// *condensed through the hanging-node constraints. Throws (on all ranks) when an element
+  /// inverts.
+  EvaluationSums evaluate_internal_forces(const Vector& u_ghosted, Vector* condensed);
+  /// Makes the trial states the committed ones; counts failed points and warns loudly.
+  void commit_states();
+  /// Assembles f_ext(t) into external_force_raw (tractions and interface forces) and adds
+  /// it to *condensed when non-null.
+  void assemble_external_forces(double t, Vector* condensed);
+  /// External power v . F_out (see FeDiagnostics::external_work).
+  double external_power() const;
+  /// Kinetic energy 1/2 v.M v: lumped mass (explicit) or consistent mass (implicit).
+  double kinetic_energy() const;
+};
+
+/// Throws std::runtime_error with `message` on every rank if `failed` is true on any rank.
+void throw_if_any(bool failed, const std::string& message, MPI_Comm comm);
+} // namespace vulnus::fem

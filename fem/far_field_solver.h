@@ -1,0 +1,165 @@
+// Public interface of the deal.II far-field solver: explicit (central difference, lumped mass)
+// and implicit (Newmark, generalized-alpha) dynamics of the slab minus the MPM zone with the
+// shared failing material, plus the hooks the MPM-FE coupling uses. The deal.II objects live
+// in FarFieldSolver::Data (fem/far_field_data.h), so this header stays light.
+#pragma once
+
+#include "fem/fem_parameters.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+template <int dim, int spacedim> class Triangulation;
+}
+
+namespace vulnus::fem
+{
+/// One node of the mesh (a support point of the vector element) owned by this rank.
+struct NodeRecord
+{
+  dealii::Point<3> position;                           ///< reference position, m
+  std::array<dealii::types::global_dof_index, 3> dofs; ///< x, y, z components
+};
+
+/// Whole-mesh figures (summed over ranks; identical on every rank).
+struct FeDiagnostics
+{
+  double time = 0.0;
+  unsigned int step = 0;
+  double kinetic_energy = 0.0;    ///< J
+  double strain_energy = 0.0;     ///< J, intact parts of the material
+  double external_work = 0.0;     ///< J, work of tractions and prescribed velocities since t = 0
+  double dissipated_energy = 0.0; ///< J, released by failure and plastic work
+  dealii::Tensor<1, 3> momentum;  ///< kg m/s
+  /// Force the supports and loads exert on the body through each slab face, N; index as
+  /// boundary ids (x-, x+, y-, y+, z-, z+, interface). R = f_int + M a - f_ext on the
+  /// face's nodes (inertia with the lumped mass).
+  std::array<dealii::Tensor<1, 3>, n_slab_faces + 1> face_reactions;
+  unsigned long long n_failed_points = 0; ///< quadrature points with any failure flag
+  double max_wave_speed = 0.0;            ///< m/s over quadrature points
+};
+
+/// Statistics of the last implicit step.
+struct ImplicitStepStatistics
+{
+  unsigned int newton_iterations = 0;
+  unsigned int linear_iterations = 0; ///< summed over Newton iterations
+  double final_residual = 0.0;        ///< N
+};
+
+/// Finite element far field of the slab (DESIGN.md section 5).
+///
+/// Total Lagrangian: f_int = int_Omega0 P : grad N dV with P = J sigma F^{-T} from
+/// materials::Material::update at every quadrature point; per-point history (failure flags,
+/// plastic state) is carried from step to step and updated only when a step is accepted.
+///
+/// Explicit (central difference in velocity-Verlet form, lumped row-sum mass M):
+///   v_{n+1/2} = v_n + dt/2 a_n,  u_{n+1} = u_n + dt v_{n+1/2},
+///   a_{n+1} = M^{-1} (f_ext - f_int(u_{n+1})),  v_{n+1} = v_{n+1/2} + dt/2 a_{n+1};
+///   stable step dt = cfl * min over cells (h_min / c_max), c from the P-wave modulus.
+/// Implicit (Chung & Hulbert 1993, J. Appl. Mech. 60:371, with Newmark as alpha_m = alpha_f = 0):
+///   M a_{n+1-alpha_m} + f_int(u_{n+1-alpha_f}) = f_ext(t_{n+1-alpha_f}), consistent mass,
+///   alpha_m = (2 rho - 1)/(rho + 1), alpha_f = rho/(rho + 1), gamma = 1/2 - alpha_m + alpha_f,
+///   beta = (1 - alpha_m + alpha_f)^2 / 4; Newton with the consistent tangent dP/dF of the
+///   material, Trilinos CG/GMRES with ML algebraic multigrid.
+/// Dirichlet velocities (fixed, roller, prescribed, interface) are imposed on the nodes with
+/// u_{n+1} = u_n + dt (v_n + v_{n+1})/2 (consistent with gamma = 1/2); hanging nodes follow
+/// their masters through AffineConstraints.
+///
+/// MPI: every call is collective unless stated otherwise.
+class FarFieldSolver
+{
+public:
+  using VectorFunction = std::function<dealii::Tensor<1, 3>(const dealii::Point<3>&)>;
+  using TimeVectorFunction =
+      std::function<dealii::Tensor<1, 3>(const dealii::Point<3>&, double time)>;
+
+  /// Checks the parameters (throws std::invalid_argument with all problems) and builds the
+  /// material; the mesh is built by setup().
+  FarFieldSolver(const FeSceneParameters& parameters, MPI_Comm communicator);
+  ~FarFieldSolver();
+  FarFieldSolver(const FarFieldSolver&) = delete;
+  FarFieldSolver& operator=(const FarFieldSolver&) = delete;
+
+  /// Builds the mesh, calls modify_mesh on it (e.g. to distort it in a test; boundary ids
+  /// must stay), distributes dofs, builds constraints, mass, node lists and the initial
+  /// accelerations.
+  void setup(const std::function<void(dealii::Triangulation<3, 3>&)>& modify_mesh = {});
+
+  /// Initial velocity field (call after setup, before the first step). Prescribed faces
+  /// keep their own values; a velocity-driven interface takes (and holds) this field until
+  /// set_interface_velocities is called.
+  void set_initial_velocity(const VectorFunction& velocity);
+  /// Prescribes all velocity components on a slab face by a field v(X, t) (verification,
+  /// e.g. a linear field for the patch test); overrides the face condition. Call before setup.
+  void set_face_velocity_field(dealii::types::boundary_id face, const TimeVectorFunction& velocity);
+
+  /// Explicit: the stable step of the current state (cfl * h / c). Implicit: the deck step.
+  double next_time_step() const;
+  /// Advances by dt with the configured integrator. Throws std::runtime_error when an
+  /// element inverts or Newton does not converge (the state is then unchanged).
+  void advance(double dt);
+
+  double time() const;
+  unsigned int step_number() const;
+  const FeSceneParameters& parameters() const;
+  MPI_Comm communicator() const;
+
+  FeDiagnostics diagnostics() const;
+  const ImplicitStepStatistics& last_implicit_step() const;
+  unsigned long long n_failed_points() const;
+  unsigned long long n_active_cells() const;
+  unsigned long long n_dofs() const;
+  unsigned long long n_quadrature_points() const;
+
+  /// Nodes owned by this rank (not collective) and their current fields.
+  const std::vector<NodeRecord>& locally_owned_nodes() const;
+  dealii::Tensor<1, 3> displacement(const NodeRecord& node) const;
+  dealii::Tensor<1, 3> velocity(const NodeRecord& node) const;
+  /// Volume-average Cauchy stress of each locally owned cell (not collective), Pa, with the
+  /// cell centres; and the volume average over the whole mesh (collective).
+  void locally_owned_cell_stresses(std::vector<dealii::Point<3>>& centres,
+                                   std::vector<dealii::Tensor<2, 3>>& stresses) const;
+  dealii::Tensor<2, 3> average_cauchy_stress() const;
+
+  // --- coupling hooks -------------------------------------------------------------------
+  /// Interface (hole surface) nodes owned by this rank (not collective), in a fixed order;
+  /// the per-node vectors below use this order.
+  const std::vector<NodeRecord>& interface_nodes() const;
+  /// Lumped (row-sum) FE mass of each interface node, kg.
+  std::vector<double> interface_lumped_masses() const;
+  /// Force the FE body exerts on each interface node at the current state, N:
+  /// f_ext - f_int on the node (what the MPM side adds to its grid node in a shared-node step).
+  std::vector<dealii::Tensor<1, 3>> interface_nodal_forces() const;
+  /// Force that had to act on the FE body at each interface node to give it its motion,
+  /// R = M a + f_int - f_ext (lumped inertia), N; the MPM side feels -R.
+  std::vector<dealii::Tensor<1, 3>> interface_reactions() const;
+  /// velocity_driven: velocities of the interface nodes at the end of the next step.
+  void set_interface_velocities(const std::vector<dealii::Tensor<1, 3>>& velocities);
+  /// force_driven: nodal forces on the interface nodes during the next step(s), N.
+  void set_interface_forces(const std::vector<dealii::Tensor<1, 3>>& forces);
+
+  /// Writes fe_mesh_NNNNN.h5 into directory and rewrites directory/fe_mesh.xdmf with all
+  /// outputs so far (displacement, velocity, cell stress, failure flag, rank).
+  void write_output(const std::string& directory);
+
+  struct Data;
+
+private:
+  void evaluate_explicit_forces(double time);
+  void advance_explicit(double dt);
+  void advance_implicit(double dt);
+
+  std::unique_ptr<Data> data;
+};
+} // namespace vulnus::fem

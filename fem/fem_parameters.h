@@ -1,0 +1,142 @@
+// Plain parameter structs of the finite element far field (DESIGN.md section 5): mesh of the
+// slab minus the MPM zone, element, time integrator, Newton and Krylov settings, face
+// conditions, material and output. Filled by the deck reader (app/) or by tests. SI units.
+#pragma once
+
+#include "materials/fiber_field.h"
+#include "materials/material_parameters.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace vulnus::fem
+{
+/// Scalar time factor g(t) that multiplies a prescribed face velocity or traction.
+///   constant        g = 1
+///   ramp            g = min(t / duration, 1)
+///   half_sine       g = sin(pi t / duration) for t < duration, else 0
+///   sine_squared    g = sin^2(pi t / duration) for t < duration, else 0 (C1 pulse)
+struct TimeProfile
+{
+  enum class Kind
+  {
+    constant,
+    ramp,
+    half_sine,
+    sine_squared
+  };
+  Kind kind = Kind::constant;
+  double duration = 0.0; ///< s, > 0 for every kind but constant
+
+  double value(double time) const;
+};
+
+/// Condition of one slab face.
+///   free      no constraint, no load
+///   fixed     all velocity components zero
+///   roller    normal velocity component zero, tangential free
+///   velocity  all velocity components prescribed: value * g(t) (m/s)
+///   traction  nominal (reference-area) dead traction value * g(t) (Pa)
+struct FaceParameters
+{
+  enum class Condition
+  {
+    free,
+    fixed,
+    roller,
+    velocity,
+    traction
+  };
+  Condition condition = Condition::free;
+  std::array<double, 3> value{{0.0, 0.0, 0.0}};
+  TimeProfile profile;
+};
+
+/// What the coupling does on the surface of the hole (the MPM zone).
+///   free            traction free (pure FE scene)
+///   velocity_driven the interface velocities are Dirichlet values set by the caller
+///   force_driven    the interface nodes receive nodal forces set by the caller
+enum class InterfaceCondition
+{
+  free,
+  velocity_driven,
+  force_driven
+};
+
+enum class TimeIntegrator
+{
+  central_difference, ///< explicit, lumped mass, CFL step
+  newmark,            ///< implicit average acceleration (beta = 1/4, gamma = 1/2)
+  generalized_alpha   ///< implicit Chung-Hulbert 1993 with spectral radius rho_inf
+};
+
+enum class LinearSolverType
+{
+  cg,
+  gmres
+};
+
+/// Face order of FeSceneParameters::faces and of the boundary ids: x-, x+, y-, y+, z-, z+.
+inline constexpr unsigned int n_slab_faces = 6;
+
+struct FeSceneParameters
+{
+  /// Slab box (m). The paper's slab: 50 x 10 x 50 mm, y through the thickness.
+  std::array<double, 3> slab_min{{0.0, 0.0, 0.0}};
+  std::array<double, 3> slab_max{{0.05, 0.01, 0.05}};
+
+  /// Optional box-shaped hole (the MPM zone), aligned with the interface cell size; may touch
+  /// slab faces (e.g. through the whole thickness).
+  bool has_hole = false;
+  std::array<double, 3> hole_min{{0.02, 0.0, 0.02}};
+  std::array<double, 3> hole_max{{0.03, 0.01, 0.03}};
+
+  /// Cell size next to the hole (the MPM grid spacing), m. Without a hole the mesh is uniform
+  /// with about this size.
+  double interface_cell_size = 1.0e-3;
+  /// Largest cell size far from the hole, m (>= interface_cell_size).
+  double far_cell_size = 4.0e-3;
+  /// Ratio of the sizes of neighbouring cells away from the hole, >= 1.
+  double grading_ratio = 1.3;
+  /// Uniform refinements of the graded mesh (convergence studies; creates no hanging nodes).
+  unsigned int n_global_refinements = 0;
+
+  unsigned int degree = 1; ///< 1 (Q1) or 2 (Q2)
+
+  TimeIntegrator integrator = TimeIntegrator::central_difference;
+  double cfl = 0.5;             ///< explicit: dt = cfl * min over cells h / c
+  double time_step = 1.0e-5;    ///< implicit, s
+  double spectral_radius = 0.8; ///< generalized-alpha rho_inf in [0, 1]
+  unsigned int max_newton_iterations = 25;
+  /// Newton converges when |r| <= relative tolerance * max(|r_0|, |f_int|) (|f_int| alone in
+  /// the first iteration), or |r| <= absolute tolerance, or the last correction |du| <=
+  /// max(relative tolerance, 1e-10) * |u_{n+1} - u_n|, or the residual stops falling
+  /// (|r_k| > |r_{k-1}| / 2, k >= 2) below 1e-6 of the force scale (round-off floor).
+  double newton_relative_tolerance = 1.0e-8;
+  double newton_absolute_tolerance = 0.0; ///< N; 0: relative test only
+  LinearSolverType linear_solver = LinearSolverType::cg;
+  double linear_relative_tolerance = 1.0e-10;
+  unsigned int max_linear_iterations = 2000;
+
+  /// Paper default: the four side faces (normals x and z) fixed, entrance and exit free.
+  std::array<FaceParameters, n_slab_faces> faces{{{FaceParameters::Condition::fixed, {}, {}},
+                                                  {FaceParameters::Condition::fixed, {}, {}},
+                                                  {FaceParameters::Condition::free, {}, {}},
+                                                  {FaceParameters::Condition::free, {}, {}},
+                                                  {FaceParameters::Condition::fixed, {}, {}},
+                                                  {FaceParameters::Condition::fixed, {}, {}}}};
+  InterfaceCondition interface_condition = InterfaceCondition::free;
+
+  materials::MaterialParameters material;
+  double density = 1060.0; ///< kg/m^3, reference density
+  materials::FiberFieldParameters fibers;
+
+  double end_time = 1.0e-3;        ///< s
+  double output_interval = 0.0;    ///< s; 0 writes only the first and last state
+  unsigned int log_interval = 100; ///< steps between progress lines of run_fe_scene
+};
+
+/// Problems with the parameters, each "<entry>: <problem>; <what to do>" (empty when fine).
+std::vector<std::string> check_parameters(const FeSceneParameters& parameters);
+} // namespace vulnus::fem

@@ -1,0 +1,381 @@
+// Implicit step: Newmark average acceleration or generalized-alpha (Chung & Hulbert 1993,
+// J. Appl. Mech. 60:371-375, eqs. 25 and 27), Newton with the consistent tangent dP/dF of the
+// material, Trilinos CG/GMRES with ML algebraic multigrid (translations as near-null space).
+//   residual  r(u) = f_ext(t_{n+1-af}) - f_int(u_{n+1-af}) - M a_{n+1-am}   (consistent M)
+//   tangent   -dr/du = (1 - af) K_t + (1 - am) / (beta dt^2) M
+#include "fem/far_field_data.h"
+#include "fem/tensor_conversion.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace vulnus::fem
+{
+using namespace dealii;
+
+struct ImplicitData
+{
+  TrilinosWrappers::SparseMatrix matrix;
+  TrilinosWrappers::PreconditionAMG preconditioner;
+  std::vector<std::vector<bool>> constant_modes;
+  TrilinosWrappers::MPI::Vector rhs, increment, external_condensed;
+  TrilinosWrappers::MPI::Vector u_old, v_old, a_old;
+  TrilinosWrappers::MPI::Vector u_alpha, a_alpha; ///< ghosted
+};
+
+namespace
+{
+struct AlphaCoefficients
+{
+  double alpha_m = 0.0, alpha_f = 0.0, beta = 0.25, gamma = 0.5;
+};
+
+AlphaCoefficients coefficients(const FeSceneParameters& prm)
+{
+  AlphaCoefficients c;
+  if (prm.integrator == TimeIntegrator::generalized_alpha)
+  {
+    const double rho = prm.spectral_radius;
+    c.alpha_m = (2.0 * rho - 1.0) / (rho + 1.0);
+    c.alpha_f = rho / (rho + 1.0);
+    c.gamma = 0.5 - c.alpha_m + c.alpha_f;
+    c.beta = 0.25 * (1.0 - c.alpha_m + c.alpha_f) * (1.0 - c.alpha_m + c.alpha_f);
+  }
+  return c;
+}
+
+void initialize_implicit(FarFieldSolver::Data& d)
+{
+  d.implicit = std::make_shared<ImplicitData>();
+  ImplicitData& im = *d.implicit;
+  TrilinosWrappers::SparsityPattern sparsity(d.owned_dofs, d.owned_dofs, d.relevant_dofs, d.comm);
+  DoFTools::make_sparsity_pattern(d.dof_handler, sparsity, d.increment_constraints, false,
+                                  Utilities::MPI::this_mpi_process(d.comm));
+  sparsity.compress();
+  im.matrix.reinit(sparsity);
+  DoFTools::extract_constant_modes(d.dof_handler, ComponentMask(), im.constant_modes);
+  for (TrilinosWrappers::MPI::Vector* v :
+       {&im.rhs, &im.increment, &im.external_condensed, &im.u_old, &im.v_old, &im.a_old})
+    v->reinit(d.owned_dofs, d.comm);
+  im.u_alpha.reinit(d.owned_dofs, d.relevant_dofs, d.comm);
+  im.a_alpha.reinit(d.owned_dofs, d.relevant_dofs, d.comm);
+}
+
+/// Assembles the Newton system at u_alpha, a_alpha into im.matrix and im.rhs (increment
+/// constraints), f_int into internal_force_raw; updates trial states and cell data.
+EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass_factor,
+                                      const double stiffness_factor)
+{
+  ImplicitData& im = *d.implicit;
+  FEValues<3> fe_values(d.mapping, d.fe, d.quadrature,
+                        update_values | update_gradients | update_JxW_values);
+  const unsigned int n_dofs = d.fe.n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(n_dofs);
+  std::vector<unsigned int> component(n_dofs);
+  for (unsigned int i = 0; i < n_dofs; ++i)
+    component[i] = d.fe.system_to_component_index(i).first;
+  std::vector<Tensor<1, 3>> grads(n_dofs);
+  std::vector<double> values(n_dofs), u_local(n_dofs), a_local(n_dofs), f_values(n_dofs);
+  FullMatrix<double> cell_matrix(n_dofs, n_dofs);
+  dealii::Vector<double> cell_rhs(n_dofs);
+  materials::PointResponse response;
+  EvaluationSums sums;
+  bool inverted = false;
+  std::string message;
+
+  im.matrix = 0.0;
+  im.rhs = 0.0;
+  d.internal_force_raw = 0.0;
+  for (const auto& cell : d.dof_handler.active_cell_iterators())
+  {
+    if (!cell->is_locally_owned())
+      continue;
+    fe_values.reinit(cell);
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+    {
+      u_local[i] = im.u_alpha(dofs[i]);
+      a_local[i] = im.a_alpha(dofs[i]);
+    }
+    const unsigned int k = cell->active_cell_index();
+    const std::size_t first = std::size_t(k) * d.n_q_points;
+    cell_matrix = 0.0;
+    cell_rhs = 0.0;
+    std::fill(f_values.begin(), f_values.end(), 0.0);
+    Tensor<2, 3> stress_sum;
+    double volume = 0.0, c_max = 0.0;
+    unsigned char flags = 0;
+    for (unsigned int q = 0; q < d.n_q_points; ++q)
+    {
+      Tensor<2, 3> F = unit_symmetric_tensor<3>();
+      Tensor<1, 3> a_q;
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        grads[i] = fe_values.shape_grad_component(i, q, component[i]);
+        values[i] = fe_values.shape_value_component(i, q, component[i]);
+        F[component[i]] += u_local[i] * grads[i];
+        a_q[component[i]] += a_local[i] * values[i];
+      }
+      materials::PointState& state = d.trial_states[first + q];
+      state = d.committed_states[first + q];
+      materials::Tangent tangent;
+      const Eigen::Matrix3d F_eigen = to_eigen(F);
+      try
+      {
+        d.material->update(F_eigen, d.fiber_directions[first + q], state, response);
+        tangent = d.material->tangent(F_eigen, d.fiber_directions[first + q], state);
+      }
+      catch (const std::runtime_error& e)
+      {
+        inverted = true;
+        message = std::string("FE implicit: ") + e.what();
+        break;
+      }
+      const double J = determinant(F);
+      const Tensor<2, 3> sigma = to_dealii(response.cauchy_stress);
+      const Tensor<2, 3> P = J * sigma * transpose(invert(F));
+      const double JxW = fe_values.JxW(q);
+      const double rho_JxW = d.prm.density * JxW;
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        const unsigned int ci = component[i];
+        const double f_int = (P[ci] * grads[i]) * JxW;
+        f_values[i] += f_int;
+        cell_rhs(i) -= f_int + rho_JxW * values[i] * a_q[ci];
+        // t_iL = sum_J g_i[J] dP_{ci J}/dF_{cj L}, then K_ij = t_i(cj, :) . g_j.
+        double t_i[3][3];
+        for (unsigned int cj = 0; cj < 3; ++cj)
+          for (unsigned int L = 0; L < 3; ++L)
+          {
+            double s = 0.0;
+            for (unsigned int Jj = 0; Jj < 3; ++Jj)
+              s += grads[i][Jj] * tangent(3 * ci + Jj, 3 * cj + L);
+            t_i[cj][L] = s;
+          }
+        for (unsigned int j = 0; j < n_dofs; ++j)
+        {
+          const unsigned int cj = component[j];
+          double kij =
+              t_i[cj][0] * grads[j][0] + t_i[cj][1] * grads[j][1] + t_i[cj][2] * grads[j][2];
+          cell_matrix(i, j) += stiffness_factor * kij * JxW +
+                               (ci == cj ? mass_factor * rho_JxW * values[i] * values[j] : 0.0);
+        }
+      }
+      sums.strain_energy += response.energy_density * JxW;
+      sums.dissipated += response.dissipated_density * JxW;
+      stress_sum += JxW * sigma;
+      volume += JxW;
+      c_max = std::max(c_max, std::sqrt(response.p_wave_modulus * J / d.prm.density));
+      flags |= state.failure;
+    }
+    if (inverted)
+      break;
+    d.cell_stress[k] = stress_sum / volume;
+    d.cell_failure[k] = flags;
+    d.cell_wave_speed[k] = c_max;
+    d.internal_force_raw.add(dofs, f_values);
+    d.increment_constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, im.matrix,
+                                                       im.rhs);
+  }
+  im.matrix.compress(VectorOperation::add);
+  im.rhs.compress(VectorOperation::add);
+  d.internal_force_raw.compress(VectorOperation::add);
+  throw_if_any(inverted, message, d.comm);
+  return sums;
+}
+} // namespace
+
+void FarFieldSolver::advance_implicit(const double dt)
+{
+  Data& d = *data;
+  if (!d.implicit)
+    initialize_implicit(d);
+  ImplicitData& im = *d.implicit;
+  const AlphaCoefficients c = coefficients(d.prm);
+  const double t_new = d.time + dt;
+  const double t_alpha = d.time + (1.0 - c.alpha_f) * dt;
+
+  im.u_old = d.displacement;
+  im.v_old = d.velocity;
+  im.a_old = d.acceleration;
+
+  // External forces at t_{n+1-af}, condensed, zero on Dirichlet rows.
+  im.external_condensed = 0.0;
+  d.assemble_external_forces(t_alpha, &im.external_condensed);
+  for (const DirichletDof& dirichlet : d.dirichlet_dofs)
+    im.external_condensed(dirichlet.dof) = 0.0;
+  im.external_condensed.compress(VectorOperation::insert);
+
+  // Predictor a_{n+1} = a_n; Dirichlet dofs from their velocity at t_{n+1}.
+  d.displacement.add(dt, im.v_old, 0.5 * dt * dt, im.a_old);
+  std::vector<double> a_dirichlet(d.dirichlet_dofs.size());
+  for (std::size_t k = 0; k < d.dirichlet_dofs.size(); ++k)
+  {
+    const DirichletDof& dirichlet = d.dirichlet_dofs[k];
+    const auto i = dirichlet.dof;
+    const double v_new = d.dirichlet_velocity(dirichlet, t_new);
+    a_dirichlet[k] = (v_new - im.v_old(i) - dt * (1.0 - c.gamma) * im.a_old(i)) / (c.gamma * dt);
+    d.displacement(i) = im.u_old(i) + dt * im.v_old(i) +
+                        dt * dt * ((0.5 - c.beta) * im.a_old(i) + c.beta * a_dirichlet[k]);
+  }
+  d.displacement.compress(VectorOperation::insert);
+  d.hanging_constraints.distribute(d.displacement);
+
+  const double a_factor = 1.0 / (c.beta * dt * dt);
+  const double mass_factor = (1.0 - c.alpha_m) * a_factor;
+  const double stiffness_factor = 1.0 - c.alpha_f;
+  auto update_acceleration = [&]()
+  {
+    // a_{n+1} = (u - u_n - dt v_n) / (beta dt^2) - (1/2 - beta)/beta a_n
+    d.acceleration = d.displacement;
+    d.acceleration.add(-1.0, im.u_old, -dt, im.v_old);
+    d.acceleration *= a_factor;
+    d.acceleration.add(-(0.5 - c.beta) / c.beta, im.a_old);
+  };
+
+  ImplicitStepStatistics& stats = d.implicit_statistics;
+  stats = ImplicitStepStatistics();
+  double first_residual = 0.0, previous_residual = 0.0, last_correction = 0.0;
+  double step_increment = 0.0;
+  bool converged = false;
+  EvaluationSums sums;
+  std::string failure;
+  for (unsigned int it = 0; it <= d.prm.max_newton_iterations; ++it)
+  {
+    update_acceleration();
+    TrilinosWrappers::MPI::Vector work(d.displacement);
+    work.sadd(1.0 - c.alpha_f, c.alpha_f, im.u_old);
+    im.u_alpha = work;
+    work = d.acceleration;
+    work.sadd(1.0 - c.alpha_m, c.alpha_m, im.a_old);
+    im.a_alpha = work;
+    try
+    {
+      sums = assemble_newton_system(d, mass_factor, stiffness_factor);
+    }
+    catch (const std::runtime_error& e)
+    {
+      failure = e.what();
+      break;
+    }
+    im.rhs += im.external_condensed;
+    const double residual = im.rhs.l2_norm();
+    if (it == 0)
+      first_residual = residual;
+    stats.final_residual = residual;
+    // Scale: the first residual of the step, or the internal forces when the predictor is
+    // already (nearly) exact.
+    const double scale = std::max(it == 0 ? 0.0 : first_residual, d.internal_force_raw.l2_norm());
+    // Or the residual sits at its round-off floor: the last correction is negligible against
+    // the step's increment, or the residual stopped falling far below the force scale.
+    const bool stagnated =
+        it >= 2 && residual > 0.5 * previous_residual && residual <= 1e-6 * scale;
+    previous_residual = residual;
+    if (residual <= d.prm.newton_absolute_tolerance ||
+        residual <= d.prm.newton_relative_tolerance * scale || stagnated ||
+        (it > 0 &&
+         last_correction <= std::max(d.prm.newton_relative_tolerance, 1e-10) * step_increment))
+    {
+      converged = true;
+      break;
+    }
+    if (it == d.prm.max_newton_iterations)
+      break;
+
+    TrilinosWrappers::PreconditionAMG::AdditionalData amg;
+    amg.elliptic = true;
+    amg.higher_order_elements = d.prm.degree > 1;
+    amg.smoother_sweeps = 2;
+    amg.aggregation_threshold = 0.02;
+    amg.constant_modes = im.constant_modes;
+    im.preconditioner.initialize(im.matrix, amg);
+    SolverControl control(d.prm.max_linear_iterations, d.prm.linear_relative_tolerance * residual);
+    im.increment = 0.0;
+    try
+    {
+      if (d.prm.linear_solver == LinearSolverType::cg)
+      {
+        TrilinosWrappers::SolverCG solver(control);
+        solver.solve(im.matrix, im.increment, im.rhs, im.preconditioner);
+      }
+      else
+      {
+        TrilinosWrappers::SolverGMRES solver(control);
+        solver.solve(im.matrix, im.increment, im.rhs, im.preconditioner);
+      }
+    }
+    catch (const std::exception& e)
+    {
+      failure = std::string("linear solver: ") + e.what();
+      break;
+    }
+    stats.linear_iterations += control.last_step();
+    d.increment_constraints.distribute(im.increment);
+    d.displacement += im.increment;
+    last_correction = im.increment.l2_norm();
+    TrilinosWrappers::MPI::Vector step(d.displacement);
+    step -= im.u_old;
+    step_increment = step.l2_norm();
+    ++stats.newton_iterations;
+  }
+
+  if (!converged)
+  {
+    d.displacement = im.u_old;
+    d.velocity = im.v_old;
+    d.acceleration = im.a_old;
+    std::ostringstream message;
+    message << "FE implicit step at t = " << d.time << " s, dt = " << dt
+            << " s did not converge after " << stats.newton_iterations
+            << " Newton iterations (residual " << stats.final_residual << " N, first "
+            << first_residual << " N)";
+    if (!failure.empty())
+      message << ": " << failure;
+    message << "; reduce the time step";
+    throw std::runtime_error(message.str());
+  }
+
+  // v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}); Dirichlet dofs get their exact value.
+  d.velocity = im.v_old;
+  d.velocity.add(dt * (1.0 - c.gamma), im.a_old, dt * c.gamma, d.acceleration);
+  for (std::size_t k = 0; k < d.dirichlet_dofs.size(); ++k)
+  {
+    const DirichletDof& dirichlet = d.dirichlet_dofs[k];
+    d.velocity(dirichlet.dof) = d.dirichlet_velocity(dirichlet, t_new);
+    d.acceleration(dirichlet.dof) = a_dirichlet[k];
+  }
+  d.velocity.compress(VectorOperation::insert);
+  d.acceleration.compress(VectorOperation::insert);
+  d.hanging_constraints.distribute(d.velocity);
+  d.hanging_constraints.distribute(d.acceleration);
+
+  d.time = t_new;
+  ++d.step;
+  d.commit_states();
+  d.last_sums = sums;
+  d.dissipated_energy += Utilities::MPI::sum(sums.dissipated, d.comm);
+  if (c.alpha_f != 0.0)
+  {
+    // Stress, internal forces and strain energy at u_{n+1} (the Newton system was at
+    // u_{n+1-af}); the committed states stay those of the converged system.
+    d.ghosted = d.displacement;
+    d.last_sums.strain_energy = d.evaluate_internal_forces(d.ghosted, nullptr).strain_energy;
+  }
+  d.assemble_external_forces(t_new, nullptr);
+  const double power = d.external_power();
+  d.external_work += 0.5 * dt * (d.last_power + power);
+  d.last_power = power;
+}
+} // namespace vulnus::fem

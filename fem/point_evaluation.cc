@@ -1,0 +1,231 @@
+// Quadrature-point work of the far field: deformation gradients, material updates with the
+// per-point history, internal forces f_int = int P : grad N dV, cell stress, failure and wave
+// speed; external forces (tractions, interface forces); energies and external power.
+#include "fem/far_field_data.h"
+#include "fem/tensor_conversion.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/vector.h>
+
+#include <cmath>
+#include <iostream>
+#include <stdexcept>
+
+namespace vulnus::fem
+{
+using namespace dealii;
+
+EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_ghosted,
+                                                              Vector* condensed)
+{
+  FEValues<3> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
+  const unsigned int n_dofs = fe.n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(n_dofs);
+  std::vector<unsigned int> component(n_dofs);
+  for (unsigned int i = 0; i < n_dofs; ++i)
+    component[i] = fe.system_to_component_index(i).first;
+  std::vector<Tensor<1, 3>> grads(n_dofs);
+  std::vector<double> u_local(n_dofs);
+  dealii::Vector<double> f_local(n_dofs);
+  std::vector<double> f_values(n_dofs);
+  materials::PointResponse response;
+  EvaluationSums sums;
+  bool inverted = false;
+  std::string message;
+
+  internal_force_raw = 0.0;
+  for (const auto& cell : dof_handler.active_cell_iterators())
+  {
+    if (!cell->is_locally_owned())
+      continue;
+    fe_values.reinit(cell);
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      u_local[i] = u_ghosted(dofs[i]);
+    const unsigned int k = cell->active_cell_index();
+    const std::size_t first = std::size_t(k) * n_q_points;
+    f_local = 0.0;
+    Tensor<2, 3> stress_sum;
+    double volume = 0.0, c_max = 0.0;
+    unsigned char flags = 0;
+    for (unsigned int q = 0; q < n_q_points && !inverted; ++q)
+    {
+      Tensor<2, 3> F = unit_symmetric_tensor<3>();
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        grads[i] = fe_values.shape_grad_component(i, q, component[i]);
+        F[component[i]] += u_local[i] * grads[i];
+      }
+      materials::PointState& state = trial_states[first + q];
+      state = committed_states[first + q];
+      try
+      {
+        material->update(to_eigen(F), fiber_directions[first + q], state, response);
+      }
+      catch (const std::runtime_error& e)
+      {
+        inverted = true;
+        message = std::string("FE: ") + e.what() + " in the cell at " +
+                  std::to_string(cell->center()[0]) + " " + std::to_string(cell->center()[1]) +
+                  " " + std::to_string(cell->center()[2]) + " m";
+        break;
+      }
+      const double J = determinant(F);
+      const Tensor<2, 3> sigma = to_dealii(response.cauchy_stress);
+      const Tensor<2, 3> P = J * sigma * transpose(invert(F));
+      const double JxW = fe_values.JxW(q);
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        f_local(i) += (P[component[i]] * grads[i]) * JxW;
+      sums.strain_energy += response.energy_density * JxW;
+      sums.dissipated += response.dissipated_density * JxW;
+      stress_sum += JxW * sigma;
+      volume += JxW;
+      c_max = std::max(c_max, std::sqrt(response.p_wave_modulus * J / prm.density));
+      flags |= state.failure;
+    }
+    if (inverted)
+      break;
+    cell_stress[k] = stress_sum / volume;
+    cell_failure[k] = flags;
+    cell_wave_speed[k] = c_max;
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      f_values[i] = f_local(i);
+    internal_force_raw.add(dofs, f_values);
+    if (condensed != nullptr)
+    {
+      f_local *= -1.0;
+      hanging_constraints.distribute_local_to_global(f_local, dofs, *condensed);
+    }
+  }
+  internal_force_raw.compress(VectorOperation::add);
+  if (condensed != nullptr)
+    condensed->compress(VectorOperation::add);
+  throw_if_any(inverted, message, comm);
+  return sums;
+}
+
+void FarFieldSolver::Data::commit_states()
+{
+  std::swap(committed_states, trial_states);
+  unsigned long long n_failed = 0;
+  for (const auto& cell : triangulation.active_cell_iterators())
+    if (cell->is_locally_owned())
+    {
+      const std::size_t first = std::size_t(cell->active_cell_index()) * n_q_points;
+      for (unsigned int q = 0; q < n_q_points; ++q)
+        n_failed += committed_states[first + q].failure != materials::intact ? 1 : 0;
+    }
+  n_failed = Utilities::MPI::sum(n_failed, comm);
+  // Loud on the first failure and whenever the count has doubled since the last warning.
+  const bool warn = n_failed > 0 && (n_failed_points == 0 || n_failed >= 2 * last_warned_failures);
+  if (warn)
+    last_warned_failures = n_failed;
+  if (warn && Utilities::MPI::this_mpi_process(comm) == 0)
+    std::cerr << "\n*** WARNING (vulnus FE): " << n_failed
+              << " finite element quadrature points have FAILED at t = " << time
+              << " s. Failure has reached the FE far field: the MPM zone is too small for "
+                 "this scene. ***\n"
+              << std::endl;
+  n_failed_points = n_failed;
+}
+
+void FarFieldSolver::Data::assemble_external_forces(const double t, Vector* condensed)
+{
+  external_force_raw = 0.0;
+  bool any_traction = false;
+  for (const FaceParameters& face : prm.faces)
+    any_traction |= face.condition == FaceParameters::Condition::traction;
+  if (any_traction)
+  {
+    FEFaceValues<3> fe_face_values(mapping, fe, face_quadrature, update_values | update_JxW_values);
+    const unsigned int n_dofs = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n_dofs);
+    dealii::Vector<double> f_local(n_dofs);
+    std::vector<double> f_values(n_dofs);
+    for (const auto& cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() >= n_slab_faces)
+            continue;
+          const FaceParameters& face = prm.faces[cell->face(f)->boundary_id()];
+          if (face.condition != FaceParameters::Condition::traction)
+            continue;
+          const double g = face.profile.value(t);
+          fe_face_values.reinit(cell, f);
+          cell->get_dof_indices(dofs);
+          f_local = 0.0;
+          for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
+            for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              const unsigned int c = fe.system_to_component_index(i).first;
+              f_local(i) += g * face.value[c] * fe_face_values.shape_value_component(i, q, c) *
+                            fe_face_values.JxW(q);
+            }
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            f_values[i] = f_local(i);
+          external_force_raw.add(dofs, f_values);
+          if (condensed != nullptr)
+            hanging_constraints.distribute_local_to_global(f_local, dofs, *condensed);
+        }
+  }
+  if (prm.interface_condition == InterfaceCondition::force_driven)
+    for (unsigned int n = 0; n < interface_nodes.size(); ++n)
+      for (unsigned int c = 0; c < 3; ++c)
+      {
+        external_force_raw(interface_nodes[n].dofs[c]) += interface_forces[n][c];
+        if (condensed != nullptr)
+          (*condensed)(interface_nodes[n].dofs[c]) += interface_forces[n][c];
+      }
+  external_force_raw.compress(VectorOperation::add);
+  if (condensed != nullptr)
+    condensed->compress(VectorOperation::add);
+}
+
+double FarFieldSolver::Data::external_power() const
+{
+  double power = 0.0;
+  for (const auto i : owned_dofs)
+    power += velocity(i) * external_force_raw(i);
+  for (const DirichletDof& d : dirichlet_dofs)
+    power +=
+        velocity(d.dof) * (internal_force_raw(d.dof) + lumped_mass(d.dof) * acceleration(d.dof) -
+                           external_force_raw(d.dof));
+  return Utilities::MPI::sum(power, comm);
+}
+
+double FarFieldSolver::Data::kinetic_energy() const
+{
+  double energy = 0.0;
+  if (!is_implicit())
+  {
+    for (const auto i : owned_dofs)
+      energy += 0.5 * lumped_mass(i) * velocity(i) * velocity(i);
+    return Utilities::MPI::sum(energy, comm);
+  }
+  // Consistent mass: 1/2 int rho0 |v_h|^2 dV, evaluated at the quadrature points.
+  Vector v(ghosted);
+  v = velocity;
+  FEValues<3> fe_values(mapping, fe, quadrature, update_values | update_JxW_values);
+  const unsigned int n_dofs = fe.n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(n_dofs);
+  for (const auto& cell : dof_handler.active_cell_iterators())
+    if (cell->is_locally_owned())
+    {
+      fe_values.reinit(cell);
+      cell->get_dof_indices(dofs);
+      for (unsigned int q = 0; q < n_q_points; ++q)
+      {
+        Tensor<1, 3> vq;
+        for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          const unsigned int c = fe.system_to_component_index(i).first;
+          vq[c] += v(dofs[i]) * fe_values.shape_value_component(i, q, c);
+        }
+        energy += 0.5 * prm.density * (vq * vq) * fe_values.JxW(q);
+      }
+    }
+  return Utilities::MPI::sum(energy, comm);
+}
+} // namespace vulnus::fem

@@ -1,0 +1,234 @@
+// Homogeneous deformations: the patch test on a distorted mesh with a hole (explicit and
+// implicit, interface driven through the coupling hook) and the tissue block stretched along
+// its fibers to 1.3, whose FE stress must equal the material's for the same F.
+#include "fem/far_field_solver.h"
+#include "fem/tensor_conversion.h"
+#include "fem_test_scenes.h"
+#include "materials/material_registry.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+using namespace dealii;
+using vulnus::fem::testing::integrator_name;
+using namespace vulnus;
+using namespace vulnus::fem;
+
+/// Runs the block with velocity v = L X on every boundary (slab faces and hole surface) and as
+/// initial field, so u = t L X exactly (zero acceleration). Returns the max nodal error
+/// relative to max |t L X|; checks stresses against Material::update at F = I + t L.
+struct PatchResult
+{
+  double displacement_error = 0.0;
+  double stress_error = 0.0;
+  unsigned long long n_failed = 0;
+  Tensor<1, 3> reaction_x_max;
+  Tensor<1, 3> interface_reaction_sum;
+  double interface_mass = 0.0;
+  Tensor<2, 3> P;
+};
+
+PatchResult run_homogeneous(FeSceneParameters p, const Tensor<2, 3>& L, const double end_time,
+                            const unsigned int n_steps_implicit, const bool distort)
+{
+  p.end_time = end_time;
+  if (p.integrator != TimeIntegrator::central_difference)
+    p.time_step = end_time / n_steps_implicit;
+  p.interface_condition =
+      p.has_hole ? InterfaceCondition::velocity_driven : InterfaceCondition::free;
+  FarFieldSolver solver(p, MPI_COMM_WORLD);
+  const auto field = [L](const Point<3>& x, double) { return Tensor<1, 3>(L * x); };
+  for (types::boundary_id b = 0; b < n_slab_faces; ++b)
+    solver.set_face_velocity_field(b, field);
+  const std::array<double, 3> lo = p.slab_min, hi = p.slab_max;
+  solver.setup(
+      [&](Triangulation<3, 3>& tria)
+      {
+        if (!distort)
+          return;
+        // Smooth interior distortion vanishing on the outer faces (the hole surface moves too).
+        GridTools::transform(
+            [&](const Point<3>& x)
+            {
+              Point<3> y = x;
+              double bubble = 1.0;
+              for (unsigned int d = 0; d < 3; ++d)
+                bubble *= std::sin(M_PI * (x[d] - lo[d]) / (hi[d] - lo[d]));
+              const double h = p.interface_cell_size;
+              y[0] += 0.3 * h * bubble * std::cos(7.0 * x[1] / h);
+              y[1] += 0.25 * h * bubble * std::sin(5.0 * x[2] / h);
+              y[2] += 0.2 * h * bubble * std::cos(3.0 * x[0] / h);
+              return y;
+            },
+            tria);
+      });
+  solver.set_initial_velocity([L](const Point<3>& x) { return Tensor<1, 3>(L * x); });
+
+  while (solver.time() < end_time * (1 - 1e-12))
+  {
+    if (p.has_hole)
+    {
+      std::vector<Tensor<1, 3>> v;
+      for (const NodeRecord& node : solver.interface_nodes())
+        v.push_back(L * node.position);
+      solver.set_interface_velocities(v);
+    }
+    solver.advance(std::min(solver.next_time_step(), end_time - solver.time()));
+  }
+
+  PatchResult r;
+  const double t = solver.time();
+  double max_u = 0.0, max_error = 0.0;
+  for (const NodeRecord& node : solver.locally_owned_nodes())
+  {
+    const Tensor<1, 3> exact = t * (L * node.position);
+    max_u = std::max(max_u, exact.norm());
+    max_error = std::max(max_error, (solver.displacement(node) - exact).norm());
+  }
+  max_u = Utilities::MPI::max(max_u, MPI_COMM_WORLD);
+  r.displacement_error = Utilities::MPI::max(max_error, MPI_COMM_WORLD) / max_u;
+
+  // Stress of the material at the same homogeneous F.
+  Tensor<2, 3> F = unit_symmetric_tensor<3>();
+  F += t * L;
+  auto material = materials::create_material(p.material);
+  materials::PointState state;
+  materials::PointResponse response;
+  const Eigen::Vector3d a0 = materials::fiber_direction(p.fibers, Eigen::Vector3d::Zero());
+  material->update(to_eigen(F), a0, state, response);
+  const Tensor<2, 3> sigma = to_dealii(response.cauchy_stress);
+  std::vector<Point<3>> centres;
+  std::vector<Tensor<2, 3>> stresses;
+  solver.locally_owned_cell_stresses(centres, stresses);
+  double stress_error = 0.0;
+  for (const Tensor<2, 3>& s : stresses)
+    stress_error = std::max(stress_error, (s - sigma).norm() / sigma.norm());
+  r.stress_error = Utilities::MPI::max(stress_error, MPI_COMM_WORLD);
+  r.n_failed = solver.n_failed_points();
+  const FeDiagnostics d = solver.diagnostics();
+  r.reaction_x_max = d.face_reactions[1];
+  r.P = determinant(F) * sigma * transpose(invert(F));
+  Tensor<1, 3> interface_sum;
+  for (const Tensor<1, 3>& f : solver.interface_reactions())
+    interface_sum += f;
+  r.interface_reaction_sum = Utilities::MPI::sum(interface_sum, MPI_COMM_WORLD);
+  double mass = 0.0;
+  for (const double m : solver.interface_lumped_masses())
+    mass += m;
+  r.interface_mass = Utilities::MPI::sum(mass, MPI_COMM_WORLD);
+  return r;
+}
+
+/// 10 mm cube, 2 mm cells, 2 mm hole at the centre, anisotropic tissue (fiber in the xy plane).
+FeSceneParameters patch_block(const TimeIntegrator integrator)
+{
+  FeSceneParameters p;
+  p.slab_min = {{0.0, 0.0, 0.0}};
+  p.slab_max = {{0.01, 0.01, 0.01}};
+  p.has_hole = true;
+  p.hole_min = {{0.004, 0.004, 0.004}};
+  p.hole_max = {{0.006, 0.006, 0.006}};
+  p.interface_cell_size = 0.002;
+  p.far_cell_size = 0.002;
+  p.integrator = integrator;
+  p.fibers.direction = Eigen::Vector3d(1.0, 1.0, 0.0);
+  p.newton_relative_tolerance = 1e-11;
+  return p;
+}
+
+Tensor<2, 3> patch_velocity_gradient(const double end_time)
+{
+  Tensor<2, 3> L;
+  L[0][0] = 0.2;
+  L[0][1] = 0.05;
+  L[1][1] = -0.1;
+  L[1][2] = 0.03;
+  L[2][0] = 0.02;
+  L[2][2] = -0.08;
+  return L / end_time;
+}
+
+class PatchTest : public ::testing::TestWithParam<TimeIntegrator>
+{
+};
+
+TEST_P(PatchTest, HomogeneousDeformationReproducedOnDistortedMeshWithHole)
+{
+  const double end_time = 2e-3;
+  const FeSceneParameters p = patch_block(GetParam());
+  const PatchResult r = run_homogeneous(p, patch_velocity_gradient(end_time), end_time, 8, true);
+  const double tolerance = GetParam() == TimeIntegrator::central_difference ? 1e-11 : 1e-8;
+  EXPECT_LT(r.displacement_error, tolerance);
+  EXPECT_LT(r.stress_error, 1e-6);
+  EXPECT_EQ(r.n_failed, 0u);
+  // Reaction on the x+ face = P e_x * area (the outer faces stay plane); hole surface closed.
+  const double area = 1e-4;
+  for (unsigned int i = 0; i < 3; ++i)
+    EXPECT_NEAR(r.reaction_x_max[i], r.P[i][0] * area, 1e-6 * r.P.norm() * area) << i;
+  EXPECT_LT(r.interface_reaction_sum.norm(), 1e-6 * r.P.norm() * area);
+  // Interface lumped masses: each of the 16 interface cell faces carries the masses of its
+  // outer hole-adjacent cells; positive and below the mass of the 26 cells around the hole.
+  EXPECT_GT(r.interface_mass, 0.0);
+  EXPECT_LT(r.interface_mass, 1060.0 * 26 * 8e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, PatchTest,
+                         ::testing::Values(TimeIntegrator::central_difference,
+                                           TimeIntegrator::newmark,
+                                           TimeIntegrator::generalized_alpha),
+                         integrator_name);
+
+TEST(PatchTestQ2, HomogeneousDeformationReproducedExplicitAndNewmark)
+{
+  const double end_time = 2e-3;
+  for (const TimeIntegrator integrator :
+       {TimeIntegrator::central_difference, TimeIntegrator::newmark})
+  {
+    FeSceneParameters p = patch_block(integrator);
+    p.degree = 2;
+    const PatchResult r = run_homogeneous(p, patch_velocity_gradient(end_time), end_time, 4, true);
+    EXPECT_LT(r.displacement_error, 1e-8) << static_cast<int>(integrator);
+    EXPECT_LT(r.stress_error, 1e-6) << static_cast<int>(integrator);
+  }
+}
+
+class FiberStretch : public ::testing::TestWithParam<TimeIntegrator>
+{
+};
+
+TEST_P(FiberStretch, StressEqualsMaterialDriverAtStretch1p3)
+{
+  FeSceneParameters p;
+  p.slab_min = {{0.0, 0.0, 0.0}};
+  p.slab_max = {{0.006, 0.006, 0.006}};
+  p.interface_cell_size = 0.002;
+  p.far_cell_size = 0.002;
+  p.integrator = GetParam();
+  p.fibers.direction = Eigen::Vector3d::UnitX();
+  p.newton_relative_tolerance = 1e-11;
+  const double end_time = 3e-3;
+  const double stretch = 1.3;
+  Tensor<2, 3> L;
+  L[0][0] = stretch - 1.0;
+  L[1][1] = L[2][2] = 1.0 / std::sqrt(stretch) - 1.0;
+  L /= end_time;
+  const PatchResult r = run_homogeneous(p, L, end_time, 10, false);
+  EXPECT_LT(r.displacement_error, 1e-8);
+  EXPECT_LT(r.stress_error, 1e-6);
+  EXPECT_EQ(r.n_failed, 0u);
+  // The fibers carry the load: sigma_xx far above the matrix stress scale.
+  EXPECT_GT(r.P[0][0], 50e3);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, FiberStretch,
+                         ::testing::Values(TimeIntegrator::central_difference,
+                                           TimeIntegrator::newmark),
+                         integrator_name);
+} // namespace

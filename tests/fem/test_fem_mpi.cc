@@ -1,0 +1,151 @@
+// The same scene (slab with a velocity-driven hole, fixed sides) on all ranks of
+// MPI_COMM_WORLD and on MPI_COMM_SELF of every rank: the results must agree to solver
+// tolerance (run under `mpirun -np 2`; with one rank it compares two serial runs). Also a
+// pure FE scene through run_fe_scene with HDF5/XDMF output.
+#include "fem/far_field_solver.h"
+#include "fem/fe_scene.h"
+#include "fem_test_scenes.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+namespace
+{
+using namespace dealii;
+using vulnus::fem::testing::integrator_name;
+using namespace vulnus;
+using namespace vulnus::fem;
+
+FeSceneParameters holed_slab(const TimeIntegrator integrator)
+{
+  FeSceneParameters p;
+  p.slab_min = {{0.0, 0.0, 0.0}};
+  p.slab_max = {{0.02, 0.006, 0.02}};
+  p.has_hole = true;
+  p.hole_min = {{0.008, 0.0, 0.008}};
+  p.hole_max = {{0.012, 0.006, 0.012}};
+  p.interface_cell_size = 0.002;
+  p.far_cell_size = 0.004;
+  p.grading_ratio = 1.5;
+  p.integrator = integrator;
+  p.time_step = 2e-4;
+  p.newton_relative_tolerance = 1e-10;
+  p.linear_relative_tolerance = 1e-12;
+  p.interface_condition = InterfaceCondition::velocity_driven;
+  p.fibers.kind = materials::FiberFieldParameters::Kind::rotating;
+  p.fibers.end_coordinate = 0.006;
+  return p;
+}
+
+struct Snapshot
+{
+  FeDiagnostics diagnostics;
+  std::map<std::array<long, 3>, Tensor<1, 3>> displacement; ///< by node position in um
+};
+
+Snapshot run(const FeSceneParameters& p, const MPI_Comm comm, const unsigned int n_steps)
+{
+  FarFieldSolver solver(p, comm);
+  solver.setup();
+  std::vector<Tensor<1, 3>> v;
+  for (const NodeRecord& node : solver.interface_nodes())
+  {
+    Tensor<1, 3> w;
+    w[0] = 0.5; // m/s: the hole surface pushed along x
+    w[1] = 0.1 * std::sin(100.0 * node.position[2]);
+    v.push_back(w);
+  }
+  solver.set_interface_velocities(v);
+  const double dt = solver.next_time_step();
+  for (unsigned int s = 0; s < n_steps; ++s)
+    solver.advance(dt);
+  Snapshot snapshot;
+  snapshot.diagnostics = solver.diagnostics();
+  for (const NodeRecord& node : solver.locally_owned_nodes())
+  {
+    std::array<long, 3> key;
+    for (unsigned int d = 0; d < 3; ++d)
+      key[d] = std::lround(node.position[d] * 1e6);
+    snapshot.displacement[key] = solver.displacement(node);
+  }
+  return snapshot;
+}
+
+class SameOnOneAndTwoRanks : public ::testing::TestWithParam<TimeIntegrator>
+{
+};
+
+TEST_P(SameOnOneAndTwoRanks, DiagnosticsAndNodalDisplacementsAgree)
+{
+  const FeSceneParameters p = holed_slab(GetParam());
+  const unsigned int n_steps = GetParam() == TimeIntegrator::central_difference ? 40 : 4;
+  const Snapshot world = run(p, MPI_COMM_WORLD, n_steps);
+  const Snapshot self = run(p, MPI_COMM_SELF, n_steps);
+  const double tolerance = GetParam() == TimeIntegrator::central_difference ? 1e-11 : 1e-7;
+  const FeDiagnostics& a = world.diagnostics;
+  const FeDiagnostics& b = self.diagnostics;
+  EXPECT_GT(a.kinetic_energy, 0.0);
+  EXPECT_NEAR(a.kinetic_energy, b.kinetic_energy, tolerance * b.kinetic_energy);
+  EXPECT_NEAR(a.strain_energy, b.strain_energy, tolerance * b.strain_energy);
+  EXPECT_NEAR(a.external_work, b.external_work, tolerance * std::abs(b.external_work));
+  for (unsigned int f = 0; f <= n_slab_faces; ++f)
+    EXPECT_LT((a.face_reactions[f] - b.face_reactions[f]).norm(),
+              tolerance * b.face_reactions[6].norm() + 1e-30)
+        << "face " << f;
+  // Every node this rank owns in the parallel run exists in its serial run.
+  double max_difference = 0.0, max_u = 0.0;
+  for (const auto& [key, u] : world.displacement)
+  {
+    const auto it = self.displacement.find(key);
+    ASSERT_NE(it, self.displacement.end());
+    max_difference = std::max(max_difference, (u - it->second).norm());
+    max_u = std::max(max_u, it->second.norm());
+  }
+  max_difference = Utilities::MPI::max(max_difference, MPI_COMM_WORLD);
+  max_u = Utilities::MPI::max(max_u, MPI_COMM_WORLD);
+  EXPECT_LT(max_difference, tolerance * max_u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, SameOnOneAndTwoRanks,
+                         ::testing::Values(TimeIntegrator::central_difference,
+                                           TimeIntegrator::newmark),
+                         integrator_name);
+
+TEST(FeScene, RunsAndWritesXdmfTimeSeries)
+{
+  FeSceneParameters p = holed_slab(TimeIntegrator::central_difference);
+  p.interface_condition = InterfaceCondition::free;
+  p.faces[2].condition = FaceParameters::Condition::traction;
+  p.faces[2].value = {{0.0, 500.0, 0.0}}; // Pa, pushing into the slab
+  p.faces[2].profile = {TimeProfile::Kind::ramp, 1e-3};
+  p.end_time = 1e-3;
+  p.output_interval = 5e-4;
+  p.log_interval = 1000;
+  const std::string directory =
+      (std::filesystem::temp_directory_path() / "vulnus_fem_scene_test").string();
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::filesystem::remove_all(directory);
+  MPI_Barrier(MPI_COMM_WORLD);
+  std::ostringstream log;
+  const FeSceneResult r = run_fe_scene(p, directory, log, MPI_COMM_WORLD);
+  EXPECT_GT(r.n_steps, 10u);
+  EXPECT_NEAR(r.time, 1e-3, 1e-12);
+  EXPECT_EQ(r.n_outputs, 3u);
+  EXPECT_GT(r.kinetic_energy + r.strain_energy, 0.0);
+  // Energy balance: work of the traction = kinetic + strain energy (no dissipation).
+  EXPECT_NEAR(r.kinetic_energy + r.strain_energy, r.external_work, 0.02 * r.external_work);
+  EXPECT_EQ(r.n_failed_points, 0u);
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  {
+    EXPECT_TRUE(std::filesystem::exists(directory + "/fe_mesh.xdmf"));
+    EXPECT_TRUE(std::filesystem::exists(directory + "/fe_mesh_00002.h5"));
+    EXPECT_TRUE(std::filesystem::exists(directory + "/fe_history.csv"));
+  }
+}
+} // namespace
