@@ -2,6 +2,8 @@
 //   v_{n+1/2} = v_n + dt/2 a_n, u_{n+1} = u_n + dt v_{n+1/2},
 //   a_{n+1} = M^{-1} (f_ext(t_{n+1}) - f_int(u_{n+1})), v_{n+1} = v_{n+1/2} + dt/2 a_{n+1};
 // Dirichlet dofs follow their prescribed velocity with u_{n+1} = u_n + dt (v_n + v_{n+1})/2.
+// Staggered form (coupling): v_{n+1/2} = v_{n-1/2} + dt a_n, u_{n+1} = u_n + dt v_{n+1/2},
+// Dirichlet dofs moving with their prescribed velocity over the step.
 #include "fem/far_field_data.h"
 
 #include <deal.II/base/mpi.h>
@@ -27,6 +29,11 @@ void FarFieldSolver::evaluate_explicit_forces(const double t)
 void FarFieldSolver::advance_explicit(const double dt)
 {
   Data& d = *data;
+  if (d.prm.staggered_velocity)
+  {
+    advance_explicit_staggered(dt);
+    return;
+  }
   const double t_new = d.time + dt;
   const std::size_t n_dirichlet = d.dirichlet_dofs.size();
   std::vector<double> u_old(n_dirichlet), v_old(n_dirichlet), v_new(n_dirichlet);
@@ -64,5 +71,39 @@ void FarFieldSolver::advance_explicit(const double dt)
   const double power = d.external_power();
   d.external_work += 0.5 * dt * (d.last_power + power);
   d.last_power = power;
+}
+
+void FarFieldSolver::advance_explicit_staggered(const double dt)
+{
+  Data& d = *data;
+  const double t_mid = d.time + 0.5 * dt;
+  const std::size_t n_dirichlet = d.dirichlet_dofs.size();
+  std::vector<double> v_old(n_dirichlet), v_step(n_dirichlet);
+  for (std::size_t k = 0; k < n_dirichlet; ++k)
+  {
+    v_old[k] = d.velocity(d.dirichlet_dofs[k].dof);
+    v_step[k] = d.dirichlet_velocity(d.dirichlet_dofs[k], t_mid);
+  }
+  d.velocity.add(dt, d.acceleration);
+  for (std::size_t k = 0; k < n_dirichlet; ++k)
+  {
+    const auto i = d.dirichlet_dofs[k].dof;
+    d.velocity(i) = v_step[k];
+    d.acceleration(i) = (v_step[k] - v_old[k]) / dt;
+  }
+  d.velocity.compress(VectorOperation::insert);
+  d.acceleration.compress(VectorOperation::insert);
+  d.hanging_constraints.distribute(d.velocity);
+  d.displacement.add(dt, d.velocity);
+  d.hanging_constraints.distribute(d.displacement);
+
+  // Power of the supports and loads over the step, at the velocity of the step (forces at t_n).
+  const double power = d.external_power();
+  d.external_work += dt * power;
+  d.last_power = power;
+
+  d.time += dt;
+  evaluate_explicit_forces(d.time);
+  ++d.step;
 }
 } // namespace vulnus::fem

@@ -158,6 +158,7 @@ public:
 private:
   void evaluate_explicit_forces(double time);
   void advance_explicit(double dt);
+  void advance_explicit_staggered(double dt);
   void advance_implicit(double dt);
 
   std::unique_ptr<Data> data;

@@ -106,6 +106,11 @@ struct FeSceneParameters
 
   TimeIntegrator integrator = TimeIntegrator::central_difference;
   double cfl = 0.5;             ///< explicit: dt = cfl * min over cells h / c
+  /// Explicit only: keep velocities at half steps as the MPM side does (symplectic Euler,
+  /// v_{n+1/2} = v_{n-1/2} + dt M^{-1} f(u_n), u_{n+1} = u_n + dt v_{n+1/2}); a
+  /// velocity-driven interface then moves with its target over the step. Used by the
+  /// coupling; the default is the velocity-Verlet form with full-step velocities.
+  bool staggered_velocity = false;
   double time_step = 1.0e-5;    ///< implicit, s
   double spectral_radius = 0.8; ///< generalized-alpha rho_inf in [0, 1]
   unsigned int max_newton_iterations = 25;

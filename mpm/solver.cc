@@ -98,10 +98,11 @@ Solver::Solver(const SceneParameters& scene)
   check_state();
 }
 
-void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& field)
+void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& field,
+                                  const int body)
 {
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
-    if (!grid_settings.body_is_rigid[b])
+    if (!grid_settings.body_is_rigid[b] && (body < 0 || static_cast<int>(b) == body))
       for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
         particles.velocity[p] = field(particles.position[p]);
   const SceneDiagnostics d = diagnostics();
@@ -130,7 +131,7 @@ double Solver::stable_time_step() const
   return std::min(limit, parameters.max_time_step);
 }
 
-void Solver::advance()
+void Solver::advance(const double cap)
 {
   double clock = omp_get_wtime();
   auto lap = [&clock](double& phase) {
@@ -149,7 +150,7 @@ void Solver::advance()
                "bulk modulus too large for the cell size, or an unstable contact)";
     throw BlowUp(message.str());
   }
-  time_step = std::min(stable, parameters.end_time - current_time);
+  time_step = std::min({stable, parameters.end_time - current_time, cap});
   if (time_step <= 0.0)
     return;
   const double dt = time_step;
@@ -163,6 +164,11 @@ void Solver::advance()
   update_grid(grid, grid_settings, fields, grid_result);
   accumulated_contact_dissipation += grid_result.contact_dissipation;
   lap(timings.grid_update);
+  if (shared.partner)
+  {
+    exchange_shared_nodes(dt);
+    lap(timings.coupling);
+  }
 
   kinematics.time_step = dt;
   update_point_kinematics(grid, transfer, kinematics, fields, particles, displacement);
@@ -170,6 +176,8 @@ void Solver::advance()
   {
     particles_to_grid(particles, grid, transfer, false, buffers, fields);
     velocities_from_momenta(grid, grid_settings, fields);
+    if (shared.partner)
+      impose_shared_velocities();
   }
   update_deformation_gradients(grid, transfer, kinematics, fields, particles, volumetric_rate);
   move_points(displacement, particles);

@@ -11,6 +11,7 @@
 #include "mpm/grid_fields.h"
 #include "mpm/grid_update.h"
 #include "mpm/grid_to_particle.h"
+#include "mpm/interface_exchange.h"
 #include "mpm/particle_to_grid.h"
 #include "mpm/particles.h"
 #include "mpm/scene_parameters.h"
@@ -19,6 +20,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -43,10 +45,11 @@ struct PhaseTimes
   double grid_to_particle = 0.0;
   double stress_update = 0.0;
   double checks_and_sorting = 0.0;
+  double coupling = 0.0; ///< the partner's exchange, including its own step
   double total() const
   {
     return time_step + particle_to_grid + grid_update + grid_to_particle + stress_update +
-           checks_and_sorting;
+           checks_and_sorting + coupling;
   }
 };
 
@@ -55,15 +58,21 @@ class Solver
 public:
   explicit Solver(const SceneParameters& scene);
 
-  /// Replaces the point velocities of the deformable bodies by field(x) (initial conditions
-  /// such as a vibration mode); resets the initial energy.
-  void set_point_velocities(const std::function<Vector3(const Vector3&)>& field);
+  /// Replaces the point velocities of the deformable bodies (or of body `body` only) by
+  /// field(x) (initial conditions such as a vibration mode); resets the initial energy.
+  void set_point_velocities(const std::function<Vector3(const Vector3&)>& field, int body = -1);
 
   /// dt = CFL h / max over deformable points of (wave speed + |v|), rigid bodies by |v| only.
   double stable_time_step() const;
 
-  /// Advances one step of size min(stable step, max step, time left). Throws BlowUp.
-  void advance();
+  /// Advances one step of size min(stable step, max step, time left, cap). Throws BlowUp.
+  void advance(double cap = std::numeric_limits<double>::infinity());
+
+  /// Shares grid nodes of one body with a partner solver (the coupling): every step the
+  /// partner sees the MPM mass, momentum and force there and sets their velocity. The
+  /// partner must outlive the solver or be replaced.
+  void share_nodes(const SharedNodes& nodes);
+  const SharedNodes& shared_nodes() const { return shared; }
 
   /// True when the end time is reached or the projectile's tail has left the targets.
   bool finished() const;
@@ -108,6 +117,8 @@ public:
 
 private:
   void sort_points();
+  void exchange_shared_nodes(double dt);
+  void impose_shared_velocities();
   void check_state() const;
   void remove_points_outside_grid();
   std::string describe_point(std::size_t p) const;
@@ -129,6 +140,9 @@ private:
   std::vector<Vector3> displacement;
   std::vector<double> volumetric_rate;
   std::vector<double> peak_yield_ratio;
+  SharedNodes shared;
+  SharedNodeState shared_state;
+  std::vector<Vector3> shared_velocity_start, shared_velocity_end;
   bool contact_active = false;
   int projectile_body = -1;
   Vector3 flight_axis = Vector3::UnitY();

@@ -1,0 +1,253 @@
+// The MPM/FE split of a hybrid scene and its checks.
+#include "coupling/decomposition.h"
+
+#include "materials/material_registry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace vulnus::coupling
+{
+namespace
+{
+const char* axis_name(const int d) { return d == 0 ? "x" : (d == 1 ? "y" : "z"); }
+
+std::string format_point(const std::array<double, 3>& x)
+{
+  std::ostringstream s;
+  s << x[0] << ", " << x[1] << ", " << x[2];
+  return s.str();
+}
+
+bool is_rigid(const mpm::SceneParameters& scene, const mpm::BodyParameters& body)
+{
+  for (const mpm::NamedMaterial& m : scene.materials)
+    if (m.name == body.material)
+      return materials::create_material(m.parameters)->is_rigid();
+  return false;
+}
+
+/// The projectile's axis must stay at least radius + one cell inside the zone wherever it
+/// crosses the slab (the zone may end at a slab face).
+void check_bullet_path(const mpm::SceneParameters& scene, const mpm::BodyParameters& slab,
+                       const HybridParameters& hybrid, std::vector<std::string>& problems)
+{
+  for (const mpm::BodyParameters& body : scene.bodies)
+  {
+    if (!body.is_projectile)
+      continue;
+    const double reach = (body.shape == mpm::BodyShape::box
+                            ? 0.5 * (body.box_max - body.box_min).norm()
+                            : body.radius) +
+                         scene.cell_size;
+    const mpm::Vector3 start = body.shape == mpm::BodyShape::box
+                                 ? mpm::Vector3(0.5 * (body.box_min + body.box_max))
+                                 : body.center;
+    mpm::Vector3 direction = body.initial_velocity;
+    if (direction.norm() == 0.0)
+      direction = body.axis;
+    direction.normalize();
+    // Sample the flight line across the slab box.
+    const double span = (slab.box_max - slab.box_min).norm() + (start - slab.box_min).norm() +
+                        (start - slab.box_max).norm();
+    const int n_samples = 2000;
+    for (int i = 0; i <= n_samples; ++i)
+    {
+      const mpm::Vector3 c = start + (span * i / n_samples) * direction;
+      bool in_slab = true;
+      for (int d = 0; d < 3; ++d)
+        in_slab = in_slab && c[d] >= slab.box_min[d] && c[d] <= slab.box_max[d];
+      if (!in_slab)
+        continue;
+      for (int d = 0; d < 3; ++d)
+      {
+        const bool lower_open = hybrid.zone_min[d] <= slab.box_min[d] + 1e-9;
+        const bool upper_open = hybrid.zone_max[d] >= slab.box_max[d] - 1e-9;
+        if ((!lower_open && c[d] - reach < hybrid.zone_min[d]) ||
+            (!upper_open && c[d] + reach > hybrid.zone_max[d]))
+        {
+          std::ostringstream s;
+          s << "Hybrid/Zone min, Hybrid/Zone max: the path of projectile '" << body.name
+            << "' at (" << c[0] << ", " << c[1] << ", " << c[2]
+            << ") m comes closer than its radius plus one cell to the zone's " << axis_name(d)
+            << " bounds; widen the zone so the tract and the tissue it tears stay in MPM";
+          problems.push_back(s.str());
+          return;
+        }
+      }
+    }
+  }
+}
+} // namespace
+
+int split_body_index(const mpm::SceneParameters& scene, const HybridParameters& hybrid)
+{
+  if (!hybrid.body.empty())
+  {
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+      if (scene.bodies[b].name == hybrid.body)
+        return static_cast<int>(b);
+    return -1;
+  }
+  int found = -1;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+  {
+    const mpm::BodyParameters& body = scene.bodies[b];
+    if (body.is_projectile || body.shape != mpm::BodyShape::box || is_rigid(scene, body))
+      continue;
+    if (found >= 0)
+      return -1; // ambiguous: Hybrid/Body must name it
+    found = static_cast<int>(b);
+  }
+  return found;
+}
+
+std::vector<std::string> check_decomposition(const mpm::SceneParameters& scene,
+                                             const HybridParameters& hybrid,
+                                             const fem::FeSceneParameters& far_field)
+{
+  std::vector<std::string> problems;
+  const int index = split_body_index(scene, hybrid);
+  if (index < 0)
+  {
+    problems.push_back(
+      hybrid.body.empty()
+        ? "Hybrid/Body: no single deformable box body that is not the projectile; name the "
+          "body to split between MPM and finite elements"
+        : "Hybrid/Body: no body named '" + hybrid.body + "'; use a name from Scene/Bodies");
+    return problems;
+  }
+  const mpm::BodyParameters& slab = scene.bodies[index];
+  if (slab.shape != mpm::BodyShape::box)
+    problems.push_back("Hybrid/Body: body '" + slab.name +
+                       "' is not a box; only a box body can be split into MPM zone and FE mesh");
+  if (is_rigid(scene, slab))
+    problems.push_back("Hybrid/Body: body '" + slab.name + "' is rigid; split a deformable body");
+  if (slab.is_projectile)
+    problems.push_back("Hybrid/Body: body '" + slab.name + "' is the projectile");
+
+  const double h = scene.cell_size;
+  const double tolerance = 1e-6 * h;
+  bool zone_inside = true;
+  for (int d = 0; d < 3; ++d)
+  {
+    if (!(hybrid.zone_max[d] > hybrid.zone_min[d] + 0.5 * h))
+    {
+      problems.push_back(std::string("Hybrid/Zone min, Hybrid/Zone max: the zone is empty along ") +
+                         axis_name(d) + "; Zone max must exceed Zone min by at least one cell");
+      zone_inside = false;
+    }
+    if (hybrid.zone_min[d] < slab.box_min[d] - tolerance ||
+        hybrid.zone_max[d] > slab.box_max[d] + tolerance)
+      zone_inside = false;
+    for (const double bound : {hybrid.zone_min[d], hybrid.zone_max[d]})
+    {
+      const double cells = (bound - scene.domain_min[d]) / h;
+      if (std::abs(cells - std::round(cells)) * h > tolerance)
+      {
+        std::ostringstream s;
+        s << "Hybrid/Zone min, Hybrid/Zone max: " << axis_name(d) << " = " << bound
+          << " m is not on a grid node (Grid/Domain min + k * Grid/Cell size); move it to "
+          << scene.domain_min[d] + std::round(cells) * h << " m";
+        problems.push_back(s.str());
+      }
+    }
+  }
+  if (!zone_inside)
+    problems.push_back("Hybrid/Zone min, Hybrid/Zone max: the zone (" +
+                       format_point(hybrid.zone_min) + ") to (" + format_point(hybrid.zone_max) +
+                       ") m must lie inside body '" + slab.name + "' (Box min, Box max)");
+  bool fills_slab = true;
+  for (int d = 0; d < 3; ++d)
+    fills_slab = fills_slab && hybrid.zone_min[d] <= slab.box_min[d] + tolerance &&
+                 hybrid.zone_max[d] >= slab.box_max[d] - tolerance;
+  if (fills_slab)
+    problems.push_back("Hybrid/Zone min, Hybrid/Zone max: the zone covers the whole body '" +
+                       slab.name + "', leaving no far field; shrink it or disable Hybrid");
+  if (far_field.far_cell_size < h)
+    problems.push_back("Far field/Far cell size: smaller than Grid/Cell size; the far field "
+                       "grows from the grid spacing at the interface");
+  if (hybrid.scheme == CouplingScheme::same_step &&
+      far_field.integrator != fem::TimeIntegrator::central_difference)
+    problems.push_back("Hybrid/Scheme, Far field/Integrator: the same-step scheme needs the "
+                       "explicit central-difference far field; use Scheme = multi step for an "
+                       "implicit far field");
+  if (far_field.degree != 1)
+    problems.push_back("Far field/Element degree: the interface nodes must coincide with MPM "
+                       "grid nodes, which needs degree 1 in a hybrid scene");
+  if (problems.empty())
+    check_bullet_path(scene, slab, hybrid, problems);
+  return problems;
+}
+
+HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters& hybrid,
+                      const fem::FeSceneParameters& far_field)
+{
+  const std::vector<std::string> problems = check_decomposition(scene, hybrid, far_field);
+  if (!problems.empty())
+  {
+    std::ostringstream message;
+    for (std::size_t i = 0; i < problems.size(); ++i)
+      message << (i ? "\n" : "") << problems[i];
+    throw std::invalid_argument(message.str());
+  }
+  HybridScene split;
+  split.hybrid = hybrid;
+  split.coupled_body = static_cast<std::size_t>(split_body_index(scene, hybrid));
+  split.mpm = scene;
+  mpm::BodyParameters& zone = split.mpm.bodies[split.coupled_body];
+  const mpm::BodyParameters slab = zone;
+  for (int d = 0; d < 3; ++d)
+  {
+    zone.box_min[d] = std::max(slab.box_min[d], hybrid.zone_min[d]);
+    zone.box_max[d] = std::min(slab.box_max[d], hybrid.zone_max[d]);
+  }
+
+  fem::FeSceneParameters& fe = split.fe;
+  fe = far_field;
+  for (int d = 0; d < 3; ++d)
+  {
+    fe.slab_min[d] = slab.box_min[d];
+    fe.slab_max[d] = slab.box_max[d];
+    fe.hole_min[d] = zone.box_min[d];
+    fe.hole_max[d] = zone.box_max[d];
+    split.initial_velocity[d] = slab.initial_velocity[d];
+  }
+  fe.has_hole = true;
+  fe.interface_cell_size = scene.cell_size;
+  fe.interface_condition = fem::InterfaceCondition::velocity_driven;
+  fe.staggered_velocity = fe.integrator == fem::TimeIntegrator::central_difference;
+  for (const mpm::NamedMaterial& m : scene.materials)
+    if (m.name == slab.material)
+      fe.material = m.parameters;
+  fe.density = slab.density;
+  fe.fibers = slab.fibers;
+  fe.end_time = scene.end_time;
+  // A slab face takes the grid's condition where it lies on the grid boundary, else it is free.
+  for (unsigned int f = 0; f < fem::n_slab_faces; ++f)
+  {
+    const int d = f / 2;
+    const bool upper = f % 2;
+    const double slab_face = upper ? slab.box_max[d] : slab.box_min[d];
+    const double grid_face = upper ? scene.domain_max[d] : scene.domain_min[d];
+    fem::FaceParameters face;
+    if (std::abs(slab_face - grid_face) <= 1e-6 * scene.cell_size)
+      switch (scene.domain_faces[f])
+      {
+      case mpm::FaceCondition::fixed:
+        face.condition = fem::FaceParameters::Condition::fixed;
+        break;
+      case mpm::FaceCondition::roller:
+        face.condition = fem::FaceParameters::Condition::roller;
+        break;
+      case mpm::FaceCondition::free:
+        face.condition = fem::FaceParameters::Condition::free;
+        break;
+      }
+    fe.faces[f] = face;
+  }
+  return split;
+}
+} // namespace vulnus::coupling

@@ -1,0 +1,38 @@
+// Splits a scene into the MPM zone (particles) and the FE far field (graded mesh with a hole),
+// and checks before any work that the split is possible: zone inside the slab, on grid nodes,
+// containing the bullet path.
+#pragma once
+
+#include "coupling/hybrid_parameters.h"
+#include "fem/fem_parameters.h"
+#include "mpm/scene_parameters.h"
+
+#include <string>
+#include <vector>
+
+namespace vulnus::coupling
+{
+struct HybridScene
+{
+  mpm::SceneParameters mpm;    ///< the split body clipped to the zone, other bodies unchanged
+  fem::FeSceneParameters fe;   ///< the split body minus the zone
+  std::size_t coupled_body = 0; ///< index of the split body in mpm.bodies
+  std::array<double, 3> initial_velocity{{0.0, 0.0, 0.0}}; ///< of the split body, m/s
+  HybridParameters hybrid;
+};
+
+/// Problems with the split, each "<entries>: <problem>; <remedy>" (empty when fine).
+std::vector<std::string> check_decomposition(const mpm::SceneParameters& scene,
+                                             const HybridParameters& hybrid,
+                                             const fem::FeSceneParameters& far_field);
+
+/// Builds the two sub-scenes. far_field supplies the FE numerics (integrator, element degree,
+/// mesh grading, tolerances); geometry, material, density, fibers, face conditions and end
+/// time come from the scene. Throws std::invalid_argument with all problems of
+/// check_decomposition.
+HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters& hybrid,
+                      const fem::FeSceneParameters& far_field);
+
+/// Index of the body the hybrid splits (hybrid.body or the default choice), or -1.
+int split_body_index(const mpm::SceneParameters& scene, const HybridParameters& hybrid);
+} // namespace vulnus::coupling

@@ -1,0 +1,211 @@
+// Hybrid MPM-FE stepping: interface matching, the summed-node prediction, the FE step and the
+// interface ledger.
+#include "coupling/hybrid_solver.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace vulnus::coupling
+{
+namespace
+{
+mpm::Vector3 to_eigen(const dealii::Tensor<1, 3>& t) { return mpm::Vector3(t[0], t[1], t[2]); }
+
+dealii::Tensor<1, 3> to_tensor(const mpm::Vector3& v)
+{
+  dealii::Tensor<1, 3> t;
+  for (unsigned int c = 0; c < 3; ++c)
+    t[c] = v[c];
+  return t;
+}
+} // namespace
+
+HybridSolver::HybridSolver(const HybridScene& scene, MPI_Comm communicator,
+                           const std::function<void(fem::FarFieldSolver&)>& before_fe_setup)
+  : split(scene)
+{
+  if (dealii::Utilities::MPI::n_mpi_processes(communicator) != 1)
+    throw std::invalid_argument("Hybrid/Enabled: hybrid scenes run on one MPI rank (the MPM "
+                                "side is not distributed yet); run without mpirun");
+  mpm_solver = std::make_unique<mpm::Solver>(split.mpm);
+  fe_solver = std::make_unique<fem::FarFieldSolver>(split.fe, communicator);
+  if (before_fe_setup)
+    before_fe_setup(*fe_solver);
+  fe_solver->setup();
+  const std::array<double, 3> v0 = split.initial_velocity;
+  fe_solver->set_initial_velocity([v0](const dealii::Point<3>&) {
+    dealii::Tensor<1, 3> v;
+    for (unsigned int c = 0; c < 3; ++c)
+      v[c] = v0[c];
+    return v;
+  });
+
+  const mpm::Grid& grid = mpm_solver->background_grid();
+  const double h = grid.cell_size();
+  for (const fem::NodeRecord& node : fe_solver->interface_nodes())
+  {
+    int ijk[3];
+    for (int d = 0; d < 3; ++d)
+      ijk[d] = static_cast<int>(std::lround((node.position[d] - grid.origin()[d]) / h));
+    const mpm::Vector3 x(node.position[0], node.position[1], node.position[2]);
+    if (!grid.has_node(ijk[0], ijk[1], ijk[2]) ||
+        (grid.node_position(grid.node_key(ijk[0], ijk[1], ijk[2])) - x).norm() > 1e-6 * h)
+    {
+      std::ostringstream s;
+      s << "Hybrid/Zone min, Hybrid/Zone max: the FE interface node at (" << x[0] << ", " << x[1]
+        << ", " << x[2] << ") m is not an MPM grid node; the zone must lie on grid nodes";
+      throw std::invalid_argument(s.str());
+    }
+    keys.push_back(grid.node_key(ijk[0], ijk[1], ijk[2]));
+  }
+  fe_mass = fe_solver->interface_lumped_masses();
+  velocity_start.assign(keys.size(), mpm::Vector3::Zero());
+  velocity_end.assign(keys.size(), mpm::Vector3::Zero());
+  mpm_solver->share_nodes({split.coupled_body, keys, this});
+}
+
+HybridSolver::~HybridSolver() = default;
+
+void HybridSolver::set_initial_velocity(const std::function<mpm::Vector3(const mpm::Vector3&)>& field)
+{
+  mpm_solver->set_point_velocities(field, static_cast<int>(split.coupled_body));
+  fe_solver->set_initial_velocity([&](const dealii::Point<3>& x) {
+    return to_tensor(field(mpm::Vector3(x[0], x[1], x[2])));
+  });
+}
+
+bool HybridSolver::finished() const { return mpm_solver->finished(); }
+
+void HybridSolver::advance()
+{
+  const double t = mpm_solver->time();
+  const double end = split.mpm.end_time;
+  if (split.hybrid.scheme == CouplingScheme::same_step)
+  {
+    mpm_solver->advance(fe_solver->next_time_step());
+    ++book.mpm_steps;
+    return;
+  }
+  if (!window_open)
+  {
+    double window = fe_solver->next_time_step();
+    if (split.hybrid.substeps > 0)
+      window = std::min(window, split.hybrid.substeps * mpm_solver->stable_time_step());
+    window_start = t;
+    window_end = std::min(t + window, end);
+    window_open = true;
+  }
+  mpm_solver->advance(window_end - t);
+  ++book.mpm_steps;
+  if (mpm_solver->time() >= window_end - 1e-9 * (window_end - window_start))
+    window_open = false;
+}
+
+void HybridSolver::predict_interface(const double dt, const mpm::SharedNodeState& mpm_side)
+{
+  const std::vector<dealii::Tensor<1, 3>> forces = fe_solver->interface_nodal_forces();
+  const std::vector<fem::NodeRecord>& nodes = fe_solver->interface_nodes();
+  const bool staggered = split.fe.staggered_velocity;
+  const mpm::Grid& grid = mpm_solver->background_grid();
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    // The shared node keeps the FE interface velocity as its own and is accelerated by the
+    // summed forces of both sides.
+    const mpm::Vector3 v_node = to_eigen(fe_solver->velocity(nodes[k]));
+    const mpm::Vector3 f_fe = to_eigen(forces[k]);
+    const double m_fe = fe_mass[k];
+    mpm::Vector3 v = v_node + dt * (mpm_side.force[k] + f_fe) / (mpm_side.mass[k] + m_fe);
+    // Supports of the grid faces hold the shared node on both sides.
+    mpm::apply_face_conditions(grid, split.mpm.domain_faces, keys[k], v);
+    velocity_start[k] = v_node;
+    velocity_end[k] = v;
+    // Force the interface exerts on the FE node and its work over the FE step.
+    const mpm::Vector3 f_interface = m_fe * (v - v_node) / dt - f_fe;
+    const mpm::Vector3 v_step = staggered ? v : mpm::Vector3(0.5 * (v + v_node));
+    book.fe_work += dt * f_interface.dot(v_step);
+    book.fe_impulse += dt * f_interface;
+  }
+}
+
+void HybridSolver::advance_fe(const double dt)
+{
+  targets.resize(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    targets[k] = to_tensor(velocity_end[k]);
+  fe_solver->set_interface_velocities(targets);
+  fe_solver->advance(dt);
+  ++book.fe_steps;
+}
+
+void HybridSolver::book_mpm_side(const double dt, const mpm::SharedNodeState& mpm_side,
+                                 const std::vector<mpm::Vector3>& v_start,
+                                 const std::vector<mpm::Vector3>& v_end)
+{
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    if (mpm_side.mass[k] <= 0.0)
+      continue;
+    const mpm::Vector3 reaction =
+        mpm_side.mass[k] * (v_end[k] - v_start[k]) / dt - mpm_side.force[k];
+    book.mpm_work -= dt * reaction.dot(v_end[k]);
+    book.mpm_impulse += dt * reaction;
+  }
+}
+
+void HybridSolver::exchange(const double time, const double dt,
+                            const mpm::SharedNodeState& mpm_side,
+                            std::vector<mpm::Vector3>& v_start, std::vector<mpm::Vector3>& v_end)
+{
+  if (split.hybrid.scheme == CouplingScheme::same_step)
+  {
+    predict_interface(dt, mpm_side);
+    advance_fe(dt);
+    v_start = velocity_start;
+    v_end = velocity_end;
+  }
+  else
+  {
+    const double window = window_end - window_start;
+    const bool first_substep = time <= window_start + 1e-9 * window;
+    if (first_substep)
+    {
+      predict_interface(window, mpm_side);
+      advance_fe(window);
+    }
+    if (split.fe.staggered_velocity)
+    {
+      // Central difference: the interface moves with one velocity over the whole window.
+      v_start = first_substep ? velocity_start : velocity_end;
+      v_end = velocity_end;
+    }
+    else
+    {
+      // Implicit: end-of-step velocities, interpolated linearly over the window.
+      const double s0 = (time - window_start) / window;
+      const double s1 = std::min(1.0, (time + dt - window_start) / window);
+      for (std::size_t k = 0; k < keys.size(); ++k)
+      {
+        const mpm::Vector3 jump = velocity_end[k] - velocity_start[k];
+        v_start[k] = velocity_start[k] + s0 * jump;
+        v_end[k] = velocity_start[k] + s1 * jump;
+      }
+    }
+  }
+  book_mpm_side(dt, mpm_side, v_start, v_end);
+}
+
+Eigen::Vector3d HybridSolver::total_momentum() const
+{
+  const fem::FeDiagnostics d = fe_solver->diagnostics();
+  return mpm_solver->diagnostics().momentum + to_eigen(d.momentum);
+}
+
+double HybridSolver::fe_mechanical_energy() const
+{
+  const fem::FeDiagnostics d = fe_solver->diagnostics();
+  return d.kinetic_energy + d.strain_energy;
+}
+} // namespace vulnus::coupling

@@ -1,0 +1,91 @@
+// The hybrid MPM-FE time loop (DESIGN.md section 6): the MPM solver of the zone and the
+// deal.II far field, coupled through interface nodes that coincide with MPM grid nodes.
+//   same step:  one dt = min(MPM stable step, FE stable step); every shared node keeps one
+//               velocity (the FE interface velocity), accelerated by the summed MPM and FE
+//               forces over the summed masses; both sides use it (momentum is conserved to
+//               round-off, a uniform deformation stays uniform).
+//   multi step: the FE side advances over a window of several MPM substeps (explicit at its
+//               own CFL step, or implicit Newmark / generalized-alpha); at the window start
+//               the interface velocity is advanced with the summed masses and forces, the FE
+//               takes its step with it, and the MPM substeps see the FE interface velocity
+//               interpolated in time (constant for the explicit staggered velocity, linear
+//               for the implicit end-of-step velocities, evaluated at substep midpoints), so
+//               both sides' interface displacements agree at every window end.
+#pragma once
+
+#include "coupling/decomposition.h"
+#include "coupling/interface_ledger.h"
+#include "fem/far_field_solver.h"
+#include "mpm/solver.h"
+
+#include <mpi.h>
+
+#include <deal.II/base/tensor.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace vulnus::coupling
+{
+class HybridSolver : public mpm::InterfacePartner
+{
+public:
+  /// Builds both sides and matches every FE interface node to an MPM grid node (throws
+  /// std::invalid_argument naming a node that does not match). Runs on one MPI rank.
+  /// before_fe_setup may prescribe FE face fields (verification problems).
+  HybridSolver(const HybridScene& scene, MPI_Comm communicator,
+               const std::function<void(fem::FarFieldSolver&)>& before_fe_setup = {});
+  ~HybridSolver() override;
+
+  /// Replaces the velocity of the split body on both sides by field(x) (initial conditions).
+  void set_initial_velocity(const std::function<mpm::Vector3(const mpm::Vector3&)>& field);
+
+  /// One MPM step (and the FE step it triggers). Throws mpm::BlowUp or std::runtime_error.
+  void advance();
+  bool finished() const;
+  double time() const { return mpm_solver->time(); }
+
+  mpm::Solver& mpm() { return *mpm_solver; }
+  const mpm::Solver& mpm() const { return *mpm_solver; }
+  fem::FarFieldSolver& fe() { return *fe_solver; }
+  const fem::FarFieldSolver& fe() const { return *fe_solver; }
+  const HybridScene& scene() const { return split; }
+  const InterfaceLedger& ledger() const { return book; }
+  std::size_t n_interface_nodes() const { return keys.size(); }
+
+  /// Total momentum of both sides, kg m/s (FE with its lumped mass).
+  Eigen::Vector3d total_momentum() const;
+  /// Kinetic + strain energy of the FE side, J.
+  double fe_mechanical_energy() const;
+
+  void exchange(double time, double dt, const mpm::SharedNodeState& mpm_side,
+                std::vector<mpm::Vector3>& velocity_start,
+                std::vector<mpm::Vector3>& velocity_end) override;
+
+private:
+  /// Shared-node velocity after a step dt: v + dt (f_mpm + f_fe) / (m_mpm + m_fe), with v the
+  /// node's own (the FE interface) velocity.
+  void predict_interface(double dt, const mpm::SharedNodeState& mpm_side);
+  void advance_fe(double dt);
+  void book_mpm_side(double dt, const mpm::SharedNodeState& mpm_side,
+                     const std::vector<mpm::Vector3>& velocity_start,
+                     const std::vector<mpm::Vector3>& velocity_end);
+
+  HybridScene split;
+  std::unique_ptr<mpm::Solver> mpm_solver;
+  std::unique_ptr<fem::FarFieldSolver> fe_solver;
+  std::vector<std::int64_t> keys;
+  std::vector<double> fe_mass;
+  InterfaceLedger book;
+
+  // Multi-step window.
+  double window_start = 0.0;
+  double window_end = 0.0;
+  bool window_open = false;
+  std::vector<mpm::Vector3> velocity_start; ///< FE interface velocity at the window start
+  std::vector<mpm::Vector3> velocity_end;   ///< at the window end (or over it, staggered)
+  std::vector<mpm::Vector3> fe_velocity, fe_force;
+  std::vector<dealii::Tensor<1, 3>> targets;
+};
+} // namespace vulnus::coupling

@@ -1,0 +1,27 @@
+// Running account of what crosses the MPM-FE interface: work done by each side on it and the
+// momentum each side received (DESIGN.md section 6, the interface energy error).
+#pragma once
+
+#include <Eigen/Core>
+
+namespace vulnus::coupling
+{
+struct InterfaceLedger
+{
+  /// Work the MPM side did on the interface since the start, J: sum over MPM steps of
+  /// -R . v_end dt, R = m_mpm (v_end - v_start)/dt - f_mpm the force the interface exerts on
+  /// the MPM side of the shared nodes.
+  double mpm_work = 0.0;
+  /// Work the FE side received through the interface, J: sum over FE steps of F_fe . v dt.
+  double fe_work = 0.0;
+  /// Momentum the interface gave the MPM side and the FE side since the start, kg m/s; their
+  /// sum is the momentum the coupling created (zero for the same-step scheme).
+  Eigen::Vector3d mpm_impulse = Eigen::Vector3d::Zero();
+  Eigen::Vector3d fe_impulse = Eigen::Vector3d::Zero();
+  unsigned long fe_steps = 0;
+  unsigned long mpm_steps = 0;
+
+  /// Work done by MPM minus work received by FE (the interface energy error), J.
+  double energy_error() const { return mpm_work - fe_work; }
+};
+} // namespace vulnus::coupling

@@ -1,0 +1,44 @@
+// Hook through which a partner solver (the FE far field) shares grid nodes with the MPM step
+// (DESIGN.md section 6): after the grid update the MPM solver reports its own mass, momentum
+// and force at the shared nodes; the partner returns the node's velocity at the start and at
+// the end of the step. A shared node carries its own velocity (like an FE node): the points
+// receive the increment v_end - v_start (FLIP) or v_end (PIC) and move with v_end.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace vulnus::mpm
+{
+using Vector3 = Eigen::Vector3d;
+
+/// The MPM side of the shared nodes in one step, indexed like SharedNodes::keys.
+struct SharedNodeState
+{
+  std::vector<double> mass;      ///< kg; 0 where no point of the coupled body reaches the node
+  std::vector<Vector3> momentum; ///< kg m/s, projected from the points (v^n = momentum / mass)
+  std::vector<Vector3> force;    ///< N, internal force plus gravity on the node
+};
+
+class InterfacePartner
+{
+public:
+  virtual ~InterfacePartner() = default;
+  /// Called once per MPM step, after the grid update, at the start time of the step. Fills
+  /// the velocity of every shared node at the start and at the end of the step (the MPM
+  /// points and the partner's interface both move with the end velocity over the step).
+  virtual void exchange(double time, double dt, const SharedNodeState& mpm_side,
+                        std::vector<Vector3>& velocity_start,
+                        std::vector<Vector3>& velocity_end) = 0;
+};
+
+/// Grid nodes shared with a partner, for one body of the MPM scene.
+struct SharedNodes
+{
+  std::size_t body = 0;
+  std::vector<std::int64_t> keys;
+  InterfacePartner* partner = nullptr;
+};
+} // namespace vulnus::mpm

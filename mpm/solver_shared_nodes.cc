@@ -1,0 +1,72 @@
+// The solver's side of the node sharing with a partner solver: gathers the MPM mass, momentum
+// and force at the shared nodes after the grid update and imposes the returned velocities.
+#include "mpm/solver.h"
+
+#include <stdexcept>
+
+namespace vulnus::mpm
+{
+void Solver::share_nodes(const SharedNodes& nodes)
+{
+  if (nodes.body >= particles.n_bodies())
+    throw std::invalid_argument("share_nodes: no body " + std::to_string(nodes.body));
+  if (grid_settings.body_is_rigid[nodes.body])
+    throw std::invalid_argument("share_nodes: body '" + parameters.bodies[nodes.body].name +
+                                "' is rigid; only a deformable body can share nodes");
+  for (const std::int64_t key : nodes.keys)
+    if (key < 0 || static_cast<std::size_t>(key) >= grid.n_box_nodes())
+      throw std::invalid_argument("share_nodes: node key outside the grid");
+  shared = nodes;
+  const std::size_t n = nodes.keys.size();
+  shared_state.mass.assign(n, 0.0);
+  shared_state.momentum.assign(n, Vector3::Zero());
+  shared_state.force.assign(n, Vector3::Zero());
+  shared_velocity_start.assign(n, Vector3::Zero());
+  shared_velocity_end.assign(n, Vector3::Zero());
+}
+
+void Solver::exchange_shared_nodes(const double dt)
+{
+  const std::size_t n_bodies = fields.n_bodies;
+  const std::size_t b = shared.body;
+  for (std::size_t k = 0; k < shared.keys.size(); ++k)
+  {
+    const std::int32_t slot = grid.slot(shared.keys[k]);
+    if (slot < 0 || fields.data[slot * n_bodies + b].mass <= 0.0)
+    {
+      shared_state.mass[k] = 0.0;
+      shared_state.momentum[k].setZero();
+      shared_state.force[k].setZero();
+      continue;
+    }
+    const NodeBodyData& d = fields.data[slot * n_bodies + b];
+    shared_state.mass[k] = d.mass;
+    shared_state.momentum[k] = d.momentum;
+    shared_state.force[k] = d.force + d.mass * parameters.gravity;
+  }
+  shared.partner->exchange(current_time, dt, shared_state, shared_velocity_start,
+                          shared_velocity_end);
+  for (std::size_t k = 0; k < shared.keys.size(); ++k)
+  {
+    const std::int32_t slot = grid.slot(shared.keys[k]);
+    if (slot >= 0 && fields.data[slot * n_bodies + b].mass > 0.0)
+      fields.velocity[slot * n_bodies + b] = shared_velocity_start[k];
+  }
+  impose_shared_velocities();
+}
+
+void Solver::impose_shared_velocities()
+{
+  const std::size_t n_bodies = fields.n_bodies;
+  const std::size_t b = shared.body;
+  for (std::size_t k = 0; k < shared.keys.size(); ++k)
+  {
+    const std::int32_t slot = grid.slot(shared.keys[k]);
+    if (slot < 0 || fields.data[slot * n_bodies + b].mass <= 0.0)
+      continue;
+    Vector3& v = fields.velocity_new[slot * n_bodies + b];
+    v = shared_velocity_end[k];
+    apply_face_conditions(grid, grid_settings.faces, shared.keys[k], v);
+  }
+}
+} // namespace vulnus::mpm

@@ -1,0 +1,70 @@
+// Small hybrid scenes shared by the coupling tests: a block of elastic tissue with an MPM zone
+// inside, and a bar along x whose middle is MPM (a 1D wave problem with rollers).
+#pragma once
+
+#include "coupling/decomposition.h"
+
+namespace vulnus::coupling::testing
+{
+/// Isotropic tissue law without failure: c = sqrt((K + 4/3 mu)/rho), mu = 2 c1.
+inline materials::MaterialParameters elastic_tissue()
+{
+  materials::MaterialParameters m;
+  m.model = "isotropic hyperelastic";
+  m.tissue.with_fibers = false;
+  m.tissue.failure.enabled = false;
+  return m;
+}
+
+inline double wave_speed(const materials::MaterialParameters& m, const double rho)
+{
+  const double mu = 2.0 * (m.tissue.c1 + m.tissue.c2);
+  return std::sqrt((m.tissue.bulk_modulus + 4.0 / 3.0 * mu) / rho);
+}
+
+/// One body `block` filling [lo, hi] (the grid domain), h = 1 mm, free grid faces.
+inline mpm::SceneParameters block_scene(const mpm::Vector3& lo, const mpm::Vector3& hi,
+                                        const double h)
+{
+  mpm::SceneParameters s;
+  s.domain_min = lo;
+  s.domain_max = hi;
+  s.cell_size = h;
+  s.materials.push_back({"tissue", elastic_tissue()});
+  mpm::BodyParameters body;
+  body.name = "block";
+  body.material = "tissue";
+  body.box_min = lo;
+  body.box_max = hi;
+  body.density = 1000.0;
+  body.particles_per_cell = 2;
+  s.bodies.push_back(body);
+  s.contact.enabled = false;
+  s.cfl = 0.4;
+  s.end_time = 1.0;
+  s.stop_when_projectile_exits = false;
+  s.n_threads = 1;
+  return s;
+}
+
+/// Explicit far field with a uniform mesh (far cell size = h).
+inline fem::FeSceneParameters uniform_far_field(const double h)
+{
+  fem::FeSceneParameters f;
+  f.far_cell_size = h;
+  f.grading_ratio = 1.0;
+  f.cfl = 0.4;
+  return f;
+}
+
+inline HybridParameters zone(const std::array<double, 3>& lo, const std::array<double, 3>& hi,
+                             const CouplingScheme scheme)
+{
+  HybridParameters p;
+  p.enabled = true;
+  p.zone_min = lo;
+  p.zone_max = hi;
+  p.scheme = scheme;
+  return p;
+}
+} // namespace vulnus::coupling::testing

@@ -1,0 +1,103 @@
+// The MPM/FE split: what goes where, and the checks that refuse an impossible split.
+#include "coupling/hybrid_solver.h"
+#include "hybrid_test_scenes.h"
+
+#include <gtest/gtest.h>
+
+namespace vulnus::coupling
+{
+namespace
+{
+using testing::block_scene;
+using testing::uniform_far_field;
+using testing::zone;
+
+std::string all_problems(const mpm::SceneParameters& s, const HybridParameters& h)
+{
+  std::string text;
+  for (const std::string& p : check_decomposition(s, h, uniform_far_field(1e-3)))
+    text += p + "\n";
+  return text;
+}
+
+TEST(Decomposition, SplitsTheBodyIntoZoneAndFarField)
+{
+  mpm::SceneParameters s = block_scene({0, 0, 0}, {0.012, 0.012, 0.012}, 1e-3);
+  s.domain_faces[0] = mpm::FaceCondition::fixed;
+  s.domain_faces[3] = mpm::FaceCondition::roller;
+  const HybridScene split = decompose(s, zone({0.004, 0.004, 0.004}, {0.008, 0.008, 0.008},
+                                              CouplingScheme::same_step),
+                                      uniform_far_field(1e-3));
+  EXPECT_NEAR(split.mpm.bodies[0].box_min[0], 0.004, 1e-15);
+  EXPECT_NEAR(split.mpm.bodies[0].box_max[2], 0.008, 1e-15);
+  EXPECT_TRUE(split.fe.has_hole);
+  EXPECT_NEAR(split.fe.slab_max[1], 0.012, 1e-15);
+  EXPECT_NEAR(split.fe.hole_min[1], 0.004, 1e-15);
+  EXPECT_EQ(split.fe.faces[0].condition, fem::FaceParameters::Condition::fixed);
+  EXPECT_EQ(split.fe.faces[3].condition, fem::FaceParameters::Condition::roller);
+  EXPECT_EQ(split.fe.faces[1].condition, fem::FaceParameters::Condition::free);
+  EXPECT_TRUE(split.fe.staggered_velocity);
+  EXPECT_EQ(split.fe.interface_condition, fem::InterfaceCondition::velocity_driven);
+
+  // Every node on the surface of the 4 x 4 x 4 cell zone is shared: 5^3 - 3^3.
+  HybridSolver solver(split, MPI_COMM_WORLD);
+  EXPECT_EQ(solver.n_interface_nodes(), 125u - 27u);
+}
+
+TEST(Decomposition, RefusesAZoneOffTheGridNodes)
+{
+  const mpm::SceneParameters s = block_scene({0, 0, 0}, {0.012, 0.012, 0.012}, 1e-3);
+  const std::string text =
+    all_problems(s, zone({0.0045, 0.004, 0.004}, {0.008, 0.008, 0.008}, CouplingScheme::same_step));
+  EXPECT_NE(text.find("x = 0.0045 m is not on a grid node"), std::string::npos) << text;
+}
+
+TEST(Decomposition, RefusesAZoneOutsideTheBodyOrCoveringIt)
+{
+  const mpm::SceneParameters s = block_scene({0, 0, 0}, {0.012, 0.012, 0.012}, 1e-3);
+  EXPECT_NE(all_problems(s, zone({0.004, 0.004, 0.004}, {0.008, 0.008, 0.014},
+                                 CouplingScheme::same_step))
+              .find("must lie inside body 'block'"),
+            std::string::npos);
+  EXPECT_NE(all_problems(s, zone({0, 0, 0}, {0.012, 0.012, 0.012}, CouplingScheme::same_step))
+              .find("leaving no far field"),
+            std::string::npos);
+}
+
+TEST(Decomposition, RefusesAnImplicitFarFieldWithTheSameStepScheme)
+{
+  const mpm::SceneParameters s = block_scene({0, 0, 0}, {0.012, 0.012, 0.012}, 1e-3);
+  fem::FeSceneParameters f = uniform_far_field(1e-3);
+  f.integrator = fem::TimeIntegrator::newmark;
+  const auto problems = check_decomposition(
+    s, zone({0.004, 0.004, 0.004}, {0.008, 0.008, 0.008}, CouplingScheme::same_step), f);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].find("Scheme = multi step"), std::string::npos);
+}
+
+TEST(Decomposition, RefusesAZoneThatMissesTheBulletPath)
+{
+  mpm::SceneParameters s = block_scene({-0.02, -0.02, -0.02}, {0.02, 0.03, 0.02}, 1e-3);
+  s.bodies[0].box_min = {-0.02, 0.0, -0.02};
+  s.bodies[0].box_max = {0.02, 0.01, 0.02};
+  mpm::BodyParameters bullet;
+  bullet.name = "bullet";
+  bullet.material = "tissue";
+  bullet.shape = mpm::BodyShape::cylinder;
+  bullet.center = {0.0, -0.012, 0.0};
+  bullet.radius = 0.0045;
+  bullet.length = 0.01;
+  bullet.initial_velocity = {0.0, 150.0, 0.0};
+  bullet.is_projectile = true;
+  s.bodies.push_back(bullet);
+  // 4.5 mm radius plus one cell needs |x|, |z| >= 5.5 mm of zone around the axis.
+  EXPECT_EQ(all_problems(s, zone({-0.006, 0.0, -0.006}, {0.006, 0.01, 0.006},
+                                 CouplingScheme::same_step)),
+            "");
+  const std::string text =
+    all_problems(s, zone({-0.005, 0.0, -0.006}, {0.006, 0.01, 0.006}, CouplingScheme::same_step));
+  EXPECT_NE(text.find("path of projectile 'bullet'"), std::string::npos) << text;
+  EXPECT_NE(text.find("zone's x bounds"), std::string::npos) << text;
+}
+} // namespace
+} // namespace vulnus::coupling
