@@ -3,6 +3,7 @@
 #include "app/deck_reader.h"
 
 #include "app/deck_checks.h"
+#include "app/method_checks.h"
 #include "app/deck_entries.h"
 #include "app/deck_sections.h"
 #include "app/line_index.h"
@@ -247,6 +248,8 @@ void declare_all(EntryTable& table, const SceneNames& names)
   declare_time_section(table);
   declare_output_section(table);
   declare_run_section(table);
+  declare_far_field_section(table);
+  declare_hybrid_section(table);
 }
 
 std::string listing_header()
@@ -358,12 +361,16 @@ RunParameters read_run_parameters_from_text(const std::string& text, const std::
   parse_time_section(prm, parameters.scene);
   parse_output_section(prm, parameters.output);
   parse_run_section(prm, parameters.scene);
+  parse_far_field_section(prm, parameters);
+  parse_hybrid_section(prm, parameters.hybrid);
   parameters.resolved_deck = print(prm);
 
   std::vector<const LineIndex*> indices;
   for (const Source& source : deck.sources)
     indices.push_back(source.index.get());
-  const std::vector<std::string> problems = check_run_parameters(parameters, EntryLocator(indices));
+  std::vector<std::string> problems = check_run_parameters(parameters, EntryLocator(indices));
+  for (const std::string& p : check_method(parameters, EntryLocator(indices)))
+    problems.push_back(p);
   if (!problems.empty())
     throw DeckError(problems);
   return parameters;

@@ -35,6 +35,12 @@ void parse_output_section(dealii::ParameterHandler& prm, OutputParameters& outpu
 void declare_run_section(EntryTable& table);
 void parse_run_section(dealii::ParameterHandler& prm, mpm::SceneParameters& scene);
 
+/// `Scene/Method`, `subsection Far field` (FE numerics) and `subsection Hybrid`.
+void declare_far_field_section(EntryTable& table);
+void parse_far_field_section(dealii::ParameterHandler& prm, RunParameters& parameters);
+void declare_hybrid_section(EntryTable& table);
+void parse_hybrid_section(dealii::ParameterHandler& prm, coupling::HybridParameters& hybrid);
+
 /// `subsection Material <name>` for each name.
 void declare_material_sections(EntryTable& table, const std::vector<std::string>& names);
 std::vector<mpm::NamedMaterial> parse_material_sections(dealii::ParameterHandler& prm,

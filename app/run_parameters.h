@@ -2,6 +2,8 @@
 // the ParameterHandler). SI units.
 #pragma once
 
+#include "coupling/hybrid_parameters.h"
+#include "fem/fem_parameters.h"
 #include "mpm/scene_parameters.h"
 
 #include <string>
@@ -19,9 +21,21 @@ struct OutputParameters
   unsigned int history_interval = 10;
 };
 
+/// How the bodies are discretised.
+enum class Method
+{
+  mpm, ///< particles everywhere, or MPM zone plus FE far field when hybrid.enabled
+  fe   ///< finite elements only: one deformable box body, no projectile
+};
+
 struct RunParameters
 {
   mpm::SceneParameters scene;
+  Method method = Method::mpm;
+  /// FE numerics (integrator, mesh grading, tolerances, face load) of the far field or of a
+  /// pure-FE scene; geometry, material and faces come from the scene.
+  fem::FeSceneParameters far_field;
+  coupling::HybridParameters hybrid;
   OutputParameters output;
   /// The deck as given on the command line ("" when read from a string).
   std::string deck_path;

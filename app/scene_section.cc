@@ -15,6 +15,10 @@ void declare_scene_section(EntryTable& table)
                 "Names of the bodies; each gets a subsection `Body <name>`. The names slab and "
                 "bullet default to the paper's reference scene (50 x 10 x 50 mm slab, 9 mm "
                 "bullet at 150 m/s along +y), other names to an empty box.");
+  table.declare("Method", "MPM", dealii::Patterns::Selection("MPM|FE"),
+                "MPM: material points everywhere (with Hybrid/Enabled the far field of the "
+                "split body becomes finite elements); FE: finite elements only, for a scene of "
+                "one deformable box body without projectile (settings in `Far field`).");
   table.leave();
 }
 
