@@ -16,11 +16,34 @@ bool body_is_rigid(const mpm::SceneParameters& scene, const mpm::BodyParameters&
   return false;
 }
 
-/// `entries` is the first path named in a message; the message location comes from it.
-void add(std::vector<std::string>& out, const EntryLocator& locator, const std::string& entry,
+/// Locates a message `<path>, <path>: ...` at the first of its paths set in the deck (or on
+/// the command line), else at `fallback`.
+std::string locate(const EntryLocator& locator, const std::string& fallback,
+                   const std::string& message)
+{
+  const std::string paths = message.substr(0, message.find(": "));
+  std::size_t begin = 0;
+  while (begin < paths.size())
+  {
+    std::size_t end = paths.find(", ", begin);
+    if (end == std::string::npos)
+      end = paths.size();
+    const std::string path = paths.substr(begin, end - begin);
+    if (path.find('/') != std::string::npos)
+    {
+      const std::string where = locator.where(path);
+      if (where.find("(default value)") == std::string::npos)
+        return where;
+    }
+    begin = end + 2;
+  }
+  return locator.where(fallback);
+}
+
+void add(std::vector<std::string>& out, const EntryLocator& locator, const std::string& fallback,
          const std::string& message)
 {
-  out.push_back(locator.where(entry) + ": " + message);
+  out.push_back(locate(locator, fallback, message) + ": " + message);
 }
 
 void check_fe_numerics(const fem::FeSceneParameters& fe, const EntryLocator& locator,
@@ -71,7 +94,7 @@ std::vector<std::string> check_method(const RunParameters& parameters, const Ent
     return out;
   for (const std::string& p :
        coupling::check_decomposition(scene, parameters.hybrid, parameters.far_field))
-    add(out, locator, p.rfind("Far field/", 0) == 0 ? "Far field/Integrator" : "Hybrid/Zone min", p);
+    add(out, locator, "Hybrid/Enabled", p);
   if (out.empty())
     check_fe_numerics(
       coupling::decompose(scene, parameters.hybrid, parameters.far_field).fe, locator, out);
