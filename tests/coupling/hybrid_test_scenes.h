@@ -2,24 +2,17 @@
 // inside, and a bar along x whose middle is MPM (a 1D wave problem with rollers).
 #pragma once
 
+#include "../fem/fem_test_scenes.h"
 #include "coupling/decomposition.h"
 
 namespace vulnus::coupling::testing
 {
-/// Isotropic tissue law without failure: c = sqrt((K + 4/3 mu)/rho), mu = 2 c1.
-inline materials::MaterialParameters elastic_tissue()
-{
-  materials::MaterialParameters m;
-  m.model = "isotropic hyperelastic";
-  m.tissue.with_fibers = false;
-  m.tissue.failure.enabled = false;
-  return m;
-}
+using fem::testing::elastic_isotropic;
 
+/// Small-strain P-wave speed of elastic_isotropic() at density rho.
 inline double wave_speed(const materials::MaterialParameters& m, const double rho)
 {
-  const double mu = 2.0 * (m.tissue.c1 + m.tissue.c2);
-  return std::sqrt((m.tissue.bulk_modulus + 4.0 / 3.0 * mu) / rho);
+  return fem::testing::p_wave_speed(m, rho);
 }
 
 /// One body `block` filling [lo, hi] (the grid domain), h = 1 mm, free grid faces.
@@ -30,7 +23,7 @@ inline mpm::SceneParameters block_scene(const mpm::Vector3& lo, const mpm::Vecto
   s.domain_min = lo;
   s.domain_max = hi;
   s.cell_size = h;
-  s.materials.push_back({"tissue", elastic_tissue()});
+  s.materials.push_back({"tissue", elastic_isotropic()});
   mpm::BodyParameters body;
   body.name = "block";
   body.material = "tissue";
