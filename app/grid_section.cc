@@ -34,6 +34,10 @@ void declare_grid_section(EntryTable& table)
   table.declare("Update scheme", "MUSL", Patterns::Selection("USL|MUSL"),
                 "Stress update: USL (update stress last) or MUSL (modified USL, velocities "
                 "re-mapped to the grid before the stress update).");
+  table.declare("Points leaving the grid", "stop", Patterns::Selection("stop|remove"),
+                "stop: a point leaving the grid ends the run as a blow-up (last good state "
+                "kept); remove: it is removed and its energy and momentum booked as outflow "
+                "(fragments flying off the exit face).");
   table.enter("Boundary conditions");
   for (unsigned int face = 0; face < 6; ++face)
   {
@@ -58,6 +62,7 @@ void parse_grid_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
       prm.get("Shape function") == "gimp" ? mpm::ShapeFunction::gimp : mpm::ShapeFunction::linear;
   scene.update_scheme =
       prm.get("Update scheme") == "USL" ? mpm::UpdateScheme::usl : mpm::UpdateScheme::musl;
+  scene.remove_points_leaving_grid = prm.get("Points leaving the grid") == "remove";
   prm.enter_subsection("Boundary conditions");
   for (unsigned int face = 0; face < 6; ++face)
     scene.domain_faces[face] = face_condition(prm.get(face_names[face]));

@@ -138,6 +138,10 @@ int run_hybrid_scene(const RunParameters& parameters, RunDirectory& directory)
       "*** " + std::to_string(fe.n_failed_points) +
       " FE quadrature points failed: the wound reached the far field; enlarge Hybrid/Zone min "
       "and Zone max");
+  if (mpm_side.removed_points() > 0)
+    totals.warnings.push_back(std::to_string(mpm_side.removed_points()) +
+                              " points left the grid and were removed; their energy is booked "
+                              "as outflow");
   for (const std::string& w : totals.warnings)
     directory.warn(w);
 
