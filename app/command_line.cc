@@ -65,7 +65,7 @@ private:
 
 void read_options(OptionReader& reader, CommandLine& line, const bool run)
 {
-  std::vector<DeckOverride> sets, output, threads;
+  std::vector<DeckOverride> sets, output, threads, restart;
   while (!reader.done())
   {
     const std::string argument = reader.take();
@@ -85,7 +85,11 @@ void read_options(OptionReader& reader, CommandLine& line, const bool run)
       threads = {{"Run/Threads=" + value, "--threads " + value}};
     }
     else if (argument == "--restart" && run)
-      throw CommandLineError("--restart is not available yet; start the run again without it");
+    {
+      line.restart_directory = reader.value_of(argument);
+      restart = {{"Output/Directory=" + line.restart_directory,
+                  "--restart '" + line.restart_directory + "'"}};
+    }
     else if (argument == "--deck" && line.command == CommandLine::Command::print_parameters)
       line.deck = reader.value_of(argument);
     else if (argument == "--help" || argument == "-h")
@@ -105,6 +109,9 @@ void read_options(OptionReader& reader, CommandLine& line, const bool run)
   line.overrides = sets;
   line.overrides.insert(line.overrides.end(), output.begin(), output.end());
   line.overrides.insert(line.overrides.end(), threads.begin(), threads.end());
+  if (!restart.empty() && !output.empty())
+    throw CommandLineError("--restart RUN_DIR continues in RUN_DIR; it cannot be combined with --output");
+  line.overrides.insert(line.overrides.end(), restart.begin(), restart.end());
 }
 } // namespace
 
@@ -156,6 +163,10 @@ std::string usage_text()
          "  vulnus run DECK.prm [--output DIR] [--set 'Section/Entry=value' ...] [--threads N]\n"
          "      Run the scene of a deck; results go to DIR (default runs/<deck name>).\n"
          "      --set overrides any deck entry (repeatable), checked like a deck line.\n"
+         "  vulnus run DECK.prm --restart RUN_DIR [--set ...] [--threads N]\n"
+         "      Continue a pure-MPM run from the newest complete checkpoint in RUN_DIR (written\n"
+         "      at Output/Checkpoint intervals and on SIGINT/SIGTERM); the deck's physics must\n"
+         "      match the checkpoint's, Time/End time may grow.\n"
          "  vulnus check DECK.prm [--set ...]\n"
          "      Check a deck (and overrides) without running or writing anything.\n"
          "  vulnus --print-parameters [FILE] [--deck DECK.prm] [--set ...]\n"
@@ -169,7 +180,8 @@ std::string usage_text()
          "      points the two runs share.\n"
          "  vulnus --help         This text.\n"
          "  vulnus --version      The version.\n"
-         "Exit status: 0 success, 1 failure during a run, 2 bad command line or deck.\n";
+         "Exit status: 0 success, 1 failure during a run, 2 bad command line or deck,\n"
+         "  130 / 143 stopped by SIGINT / SIGTERM after writing a checkpoint.\n";
 }
 
 std::string version_text()

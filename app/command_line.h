@@ -21,7 +21,7 @@ struct CommandLine
 {
   enum class Command
   {
-    run,              ///< vulnus run DECK [--output DIR] [--set ...] [--threads N]
+    run,              ///< vulnus run DECK [--output DIR | --restart DIR] [--set ...] [--threads N]
     check,            ///< vulnus check DECK [--set ...]: validate only
     print_parameters, ///< vulnus --print-parameters [FILE] [--deck DECK] [--set ...]
     point,            ///< vulnus point ... (arguments in `arguments`)
@@ -37,10 +37,12 @@ struct CommandLine
   /// Run/Threads, in that order.
   std::vector<DeckOverride> overrides;
   std::vector<std::string> arguments; ///< point: everything after it; compare: the two runs
+  /// run --restart RUN_DIR: continue from the newest complete checkpoint there ("" = fresh run).
+  std::string restart_directory;
 };
 
 /// Throws CommandLineError for an unknown subcommand or option, a missing argument, or
-/// `--restart` (not available yet).
+/// `--restart` together with `--output`.
 CommandLine parse_command_line(int argc, const char* const* argv);
 
 std::string usage_text();

@@ -34,14 +34,23 @@ int run_command(const CommandLine& line)
     report(error);
     return 2;
   }
+  parameters.output.restart = !line.restart_directory.empty();
+  if (parameters.output.restart && (parameters.method != Method::mpm || parameters.hybrid.enabled))
+  {
+    std::cerr << "vulnus: error: --restart: only pure-MPM runs can be restarted (this deck is "
+              << (parameters.method == Method::fe ? "pure FE" : "hybrid") << ")\n";
+    return 2;
+  }
 
   try
   {
     const std::string path = parameters.output.directory.empty() ? default_run_directory(line.deck)
                                                                  : parameters.output.directory;
     RunDirectory directory(path);
-    directory.write_deck_used(parameters.resolved_deck);
-    directory.log(std::string("vulnus ") + VULNUS_VERSION + " run " + line.deck);
+    if (!parameters.output.restart) // a restart writes it once the checkpoint matches the deck
+      directory.write_deck_used(parameters.resolved_deck);
+    directory.log(std::string("vulnus ") + VULNUS_VERSION + " run " + line.deck +
+                  (parameters.output.restart ? " (restart)" : ""));
     for (const DeckOverride& override_ : line.overrides)
       directory.log("  override " + override_.origin);
     directory.log("run directory: " + directory.path());

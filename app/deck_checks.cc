@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace vulnus::app
@@ -43,6 +44,21 @@ public:
   {
     if (!ok)
       messages.push_back(locator.where(entry) + ": " + entry + ": " + problem + "; " + remedy);
+  }
+
+  /// Same for a problem of several entries: located at the first one the deck sets.
+  void require_all(const bool ok, const std::vector<std::string>& entries,
+                   const std::string& problem, const std::string& remedy)
+  {
+    if (ok)
+      return;
+    std::string where = locator.where(entries.front()), names;
+    for (auto e = entries.rbegin(); e != entries.rend(); ++e)
+      if (locator.where(*e).find("(default value)") == std::string::npos)
+        where = locator.where(*e);
+    for (const std::string& e : entries)
+      names += (names.empty() ? "" : ", ") + e;
+    messages.push_back(where + ": " + names + ": " + problem + "; " + remedy);
   }
 
   std::vector<std::string> messages;
@@ -227,6 +243,109 @@ void check_bodies(const mpm::SceneParameters& scene, Checker& check)
     }
   }
 }
+bool shape_is_valid(const mpm::BodyParameters& body)
+{
+  if (body.shape == mpm::BodyShape::box)
+    return (body.box_max - body.box_min).minCoeff() > 0.0;
+  if (body.radius <= 0.0)
+    return false;
+  return body.shape == mpm::BodyShape::sphere ||
+         (body.axis.norm() > 0.0 && body.length > (body.nose == mpm::NoseShape::hemispherical
+                                                      ? body.radius
+                                                      : 0.0));
+}
+
+/// Depth by which two bodies interpenetrate (<= 0: apart): exact for box-box and
+/// sphere-box, by bounding boxes otherwise (conservative for cylinders off the axes).
+double overlap_depth(const mpm::BodyParameters& a, const mpm::BodyParameters& b)
+{
+  if (a.shape == mpm::BodyShape::sphere && b.shape == mpm::BodyShape::box)
+    return overlap_depth(b, a);
+  if (a.shape == mpm::BodyShape::box && b.shape == mpm::BodyShape::sphere)
+  {
+    const Vector3 nearest = b.center.cwiseMax(a.box_min).cwiseMin(a.box_max);
+    return b.radius - (b.center - nearest).norm();
+  }
+  Vector3 lower_a, upper_a, lower_b, upper_b;
+  bounding_box(a, lower_a, upper_a);
+  bounding_box(b, lower_b, upper_b);
+  return (upper_a.cwiseMin(upper_b) - lower_a.cwiseMax(lower_b)).minCoeff();
+}
+
+/// True when the ray origin + t direction (t >= 0) meets the box [lower, upper].
+bool ray_meets_box(const Vector3& origin, const Vector3& direction, const Vector3& lower,
+                   const Vector3& upper)
+{
+  double enter = 0.0, leave = std::numeric_limits<double>::infinity();
+  for (unsigned int d = 0; d < 3; ++d)
+  {
+    if (direction[d] == 0.0)
+    {
+      if (origin[d] < lower[d] || origin[d] > upper[d])
+        return false;
+      continue;
+    }
+    double t0 = (lower[d] - origin[d]) / direction[d], t1 = (upper[d] - origin[d]) / direction[d];
+    if (t0 > t1)
+      std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+  }
+  return enter <= leave;
+}
+
+/// Bodies that interpenetrate at the start, and a projectile whose flight misses every
+/// other body (its swept bounding box never meets theirs).
+void check_body_layout(const mpm::SceneParameters& scene, Checker& check)
+{
+  const double tolerance = 1e-3 * scene.cell_size;
+  const auto& bodies = scene.bodies;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < bodies.size(); ++j)
+    {
+      if (!shape_is_valid(bodies[i]) || !shape_is_valid(bodies[j]))
+        continue;
+      const double depth = overlap_depth(bodies[i], bodies[j]);
+      auto placement = [](const mpm::BodyParameters& body)
+      { return "Body " + body.name + (body.shape == mpm::BodyShape::box ? "/Box min" : "/Center"); };
+      check.require_all(depth <= tolerance, {placement(bodies[j]), placement(bodies[i])},
+                    "bodies '" + bodies[i].name + "' and '" + bodies[j].name +
+                      "' overlap at the start (by " + number(depth) + " m)",
+                    "move them apart: material points of two bodies cannot share space");
+    }
+
+  for (const mpm::BodyParameters& projectile : bodies)
+  {
+    if (!projectile.is_projectile || !shape_is_valid(projectile))
+      continue;
+    const std::string entry = "Body " + projectile.name + "/Initial velocity";
+    bool anything_moves = false;
+    for (const mpm::BodyParameters& body : bodies)
+      anything_moves = anything_moves || body.initial_velocity.norm() > 0.0;
+    check.require(anything_moves, entry,
+                  "the projectile and every other body are at rest, so nothing would happen",
+                  "give the projectile its muzzle velocity, e.g. 0, 150, 0 (m/s)");
+    if (projectile.initial_velocity.norm() == 0.0 || bodies.size() < 2)
+      continue;
+    Vector3 lower, upper;
+    bounding_box(projectile, lower, upper);
+    const Vector3 half = 0.5 * (upper - lower), centre = 0.5 * (upper + lower);
+    bool meets = false;
+    for (const mpm::BodyParameters& target : bodies)
+    {
+      if (&target == &projectile || !shape_is_valid(target))
+        continue;
+      Vector3 target_lower, target_upper;
+      bounding_box(target, target_lower, target_upper);
+      meets = meets || ray_meets_box(centre, projectile.initial_velocity - target.initial_velocity,
+                                     target_lower - half, target_upper + half);
+    }
+    check.require(meets, entry,
+                  "the projectile's flight path (from " + point(centre) + " along " +
+                    point(projectile.initial_velocity) + ") misses every other body",
+                  "aim the velocity at the target, or move the projectile in front of it");
+  }
+}
 } // namespace
 
 std::string model_subsection(const std::string& model)
@@ -245,6 +364,7 @@ std::vector<std::string> check_run_parameters(const RunParameters& parameters,
   check_time(parameters, check);
   check_materials(parameters.scene, check);
   check_bodies(parameters.scene, check);
+  check_body_layout(parameters.scene, check);
   return check.messages;
 }
 } // namespace vulnus::app

@@ -1,11 +1,9 @@
 // Pure-MPM time loop with its outputs.
 #include "app/mpm_run.h"
 
-#include "app/csv_history.h"
-#include "app/mpm_history.h"
-#include "app/mpm_snapshot.h"
+#include "app/mpm_run_files.h"
 #include "app/mpm_summary.h"
-#include "app/particle_output.h"
+#include "app/stop_signals.h"
 #include "app/summary_json.h"
 #include "mpm/solver.h"
 
@@ -58,12 +56,25 @@ void log_scene(const mpm::Solver& solver, RunDirectory& directory)
                    ? "multi-velocity field, friction " + std::to_string(scene.contact.friction_coefficient)
                    : "none (one body or disabled): no contact pass"));
 }
+void log_checkpoint_policy(const OutputParameters& output, RunDirectory& directory)
+{
+  std::ostringstream o;
+  o << "checkpoints: ";
+  if (output.checkpoint_step_interval > 0)
+    o << "every " << output.checkpoint_step_interval << " steps, ";
+  if (output.checkpoint_wall_interval > 0)
+    o << "every " << output.checkpoint_wall_interval << " s of wall time, ";
+  o << "on SIGINT/SIGTERM; newest " << output.checkpoints_kept << " kept in "
+    << directory.file("checkpoints");
+  directory.log(o.str());
+}
 } // namespace
 
 int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
 {
   if (parameters.scene.n_threads > 0)
     omp_set_num_threads(static_cast<int>(parameters.scene.n_threads));
+  install_stop_signal_handlers();
   const auto wall_start = std::chrono::steady_clock::now();
   auto wall_seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -73,23 +84,29 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
   log_scene(solver, directory);
 
   RunTotals totals;
-  if (solver.projectile() >= 0)
+  if (solver.projectile() >= 0) // from the initial state, before any restart
   {
     const mpm::BodySummary b = solver.diagnostics().bodies[solver.projectile()];
     totals.projectile_initial_speed = b.velocity.dot(solver.flight_direction());
     totals.projectile_initial_kinetic_energy = b.kinetic_energy;
   }
 
-  CsvHistory history(directory.file("history.csv"), mpm_history_columns());
-  ParticleOutput output(directory.path());
-  const double output_interval = parameters.output.particle_interval;
-  output.write(solver.time(), mpm_snapshot(solver));
-  double next_output = output_interval > 0 ? output_interval : parameters.scene.end_time * 2;
-  history.add_row(mpm_history_row(solver, solver.diagnostics()));
+  MpmRunFiles files(parameters, directory);
+  files.start(solver);
+  log_checkpoint_policy(parameters.output, directory);
 
   double last_progress = 0.0;
+  int stop_signal = 0;
   while (!solver.finished())
   {
+    if ((stop_signal = pending_stop_signal()) != 0)
+    {
+      const std::string path = files.write_checkpoint(solver, wall_seconds());
+      directory.warn(std::string("stopped by ") + stop_signal_name(stop_signal) + " at step " +
+                     std::to_string(solver.step_count()) + "; checkpoint " + path +
+                     "; continue with `vulnus run DECK --restart " + directory.path() + "`");
+      return 128 + stop_signal;
+    }
     try
     {
       solver.advance();
@@ -99,19 +116,13 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
       totals.completed = false;
       totals.error = e.what();
       directory.warn(std::string("blow-up: ") + e.what());
-      directory.warn("the last good state is the last particle output (t = " +
-                     std::to_string(output.n_outputs() > 0 ? next_output - output_interval : 0.0) +
-                     " s) in " + output.xdmf_path());
+      directory.warn("the last good state is " + files.last_good_state());
       break;
     }
-    if (solver.step_count() % parameters.output.history_interval == 0)
-      history.add_row(mpm_history_row(solver, solver.diagnostics()));
-    if (solver.time() >= next_output * (1 - 1e-12))
-    {
-      output.write(solver.time(), mpm_snapshot(solver));
-      next_output += output_interval;
-    }
+    files.after_step(solver);
     const double wall = wall_seconds();
+    if (files.checkpoint_due(solver, wall))
+      directory.log("checkpoint: " + files.write_checkpoint(solver, wall));
     if (wall - last_progress >= 5.0)
     {
       last_progress = wall;
@@ -124,14 +135,9 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
       directory.log(o.str());
     }
   }
-  totals.wall_seconds = wall_seconds();
-  const mpm::SceneDiagnostics final_state = solver.diagnostics();
+  totals.wall_seconds = files.earlier_wall_seconds() + wall_seconds();
   if (totals.completed)
-  {
-    history.add_row(mpm_history_row(solver, final_state));
-    output.write(solver.time(), mpm_snapshot(solver));
-  }
-  history.flush();
+    files.finish(solver);
 
   if (solver.projectile() >= 0 && !solver.body_material(solver.projectile()).is_rigid())
   {

@@ -1,5 +1,6 @@
 // The time loop of a pure-MPM scene: progress on the terminal, CSV history, particle output
-// at the deck's interval, blow-up reporting, and summary.json at the end.
+// at the deck's interval, checkpoints (and restart), stop on SIGINT/SIGTERM, blow-up
+// reporting, and summary.json at the end.
 #pragma once
 
 #include "app/run_directory.h"
@@ -7,6 +8,7 @@
 
 namespace vulnus::app
 {
-/// Returns the exit status: 0 when the run completed, 1 after a detected blow-up.
+/// Returns the exit status: 0 when the run completed, 1 after a detected blow-up, 128 + the
+/// signal number when stopped by SIGINT/SIGTERM (after writing a checkpoint).
 int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory);
 } // namespace vulnus::app

@@ -16,6 +16,14 @@ void declare_output_section(EntryTable& table)
                 "and last states only.");
   table.declare("History interval", "10", Patterns::Integer(1),
                 "Steps between rows of the CSV time history.");
+  table.declare("Checkpoint step interval", "0", Patterns::Integer(0),
+                "Steps between checkpoints (run directory, checkpoints/); 0: none by step. "
+                "`vulnus run DECK --restart RUN_DIR` continues from the newest. Pure-MPM scenes.");
+  table.declare("Checkpoint wall interval", "0", Patterns::Double(0.0),
+                "Wall-clock seconds between checkpoints; 0: none by wall time. A run stopped "
+                "by SIGINT or SIGTERM always writes one. Pure-MPM scenes.");
+  table.declare("Checkpoints kept", "2", Patterns::Integer(1, 1000),
+                "Number of newest checkpoints kept; older ones are deleted.");
   table.leave();
 }
 
@@ -25,6 +33,10 @@ void parse_output_section(dealii::ParameterHandler& prm, OutputParameters& outpu
   output.directory = prm.get("Directory");
   output.particle_interval = prm.get_double("Particle output interval");
   output.history_interval = static_cast<unsigned int>(prm.get_integer("History interval"));
+  output.checkpoint_step_interval =
+    static_cast<unsigned int>(prm.get_integer("Checkpoint step interval"));
+  output.checkpoint_wall_interval = prm.get_double("Checkpoint wall interval");
+  output.checkpoints_kept = static_cast<unsigned int>(prm.get_integer("Checkpoints kept"));
   prm.leave_subsection();
 }
 

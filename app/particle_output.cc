@@ -9,7 +9,10 @@
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <istream>
+#include <ostream>
 #include <sstream>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace vulnus::app
@@ -191,6 +194,63 @@ std::string ParticleOutput::write(const double time, const ParticleSnapshot& sna
   records.push_back(record);
   write_xdmf();
   return path;
+}
+
+void ParticleOutput::save_records(std::ostream& out) const
+{
+  out << records.size() << '\n';
+  for (const Record& record : records)
+  {
+    char time[40];
+    std::snprintf(time, sizeof(time), "%a", record.time);
+    out << time << ' ' << record.file_name.size() << ' ' << record.file_name << ' '
+        << record.n_particles << ' ' << record.fields.size();
+    for (const FieldRecord& field : record.fields)
+      out << ' ' << static_cast<int>(field.kind) << ' ' << field.name.size() << ' ' << field.name;
+    out << '\n';
+  }
+}
+
+void ParticleOutput::restore_records(std::istream& in)
+{
+  auto fail = [] { throw std::runtime_error("the particle-output list in the checkpoint is malformed"); };
+  auto read_name = [&](std::string& name)
+  {
+    std::size_t length = 0;
+    if (!(in >> length) || length > 4096 || in.get() != ' ')
+      fail();
+    name.assign(length, '\0');
+    if (!in.read(name.data(), static_cast<std::streamsize>(length)))
+      fail();
+  };
+  std::size_t n_records = 0;
+  if (!(in >> n_records) || n_records > 10000000)
+    fail();
+  std::vector<Record> loaded(n_records);
+  for (Record& record : loaded)
+  {
+    std::string time;
+    std::size_t n_fields = 0;
+    if (!(in >> time))
+      fail();
+    record.time = std::strtod(time.c_str(), nullptr);
+    read_name(record.file_name);
+    if (!(in >> record.n_particles >> n_fields) || n_fields > 1000)
+      fail();
+    record.fields.resize(n_fields);
+    for (FieldRecord& field : record.fields)
+    {
+      int kind = 0;
+      if (!(in >> kind) || kind < 0 || kind > 3)
+        fail();
+      field.kind = static_cast<ParticleSnapshot::FieldKind>(kind);
+      read_name(field.name);
+    }
+  }
+  if (in.get() != '\n')
+    fail();
+  records = std::move(loaded);
+  write_xdmf();
 }
 
 void ParticleOutput::write_xdmf() const

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -78,7 +79,15 @@ public:
   std::string write(double time, const ParticleSnapshot& snapshot);
 
   unsigned int n_outputs() const { return static_cast<unsigned int>(records.size()); }
+
+  /// The list of outputs written so far (times, files, fields), for a checkpoint; restore
+  /// continues the series after them (files written later by the interrupted run are
+  /// overwritten). restore throws std::runtime_error on malformed input.
+  void save_records(std::ostream& out) const;
+  void restore_records(std::istream& in);
   std::string xdmf_path() const;
+  /// Simulated time of the newest output (0 before the first).
+  double last_time() const { return records.empty() ? 0.0 : records.back().time; }
 
 private:
   struct FieldRecord

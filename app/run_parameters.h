@@ -19,6 +19,13 @@ struct OutputParameters
   double particle_interval = 1.0e-5;
   /// Steps between rows of the CSV time history.
   unsigned int history_interval = 10;
+  /// Steps between checkpoints (0: none by step count).
+  unsigned int checkpoint_step_interval = 0;
+  /// Wall-clock seconds between checkpoints (0: none by wall time).
+  double checkpoint_wall_interval = 0.0;
+  unsigned int checkpoints_kept = 2;
+  /// Set by `vulnus run --restart DIR`: continue from the newest checkpoint in `directory`.
+  bool restart = false;
 };
 
 /// How the bodies are discretised.

@@ -34,15 +34,6 @@ TEST(Command, UnknownSubcommandGivesUsageAndStatus2)
   EXPECT_EQ(run_vulnus("run a.prm --bogus", scratch.path).exit_status, 2);
 }
 
-TEST(Command, RestartIsRejectedForNow)
-{
-  ScratchDirectory scratch("restart");
-  const CommandResult result = run_vulnus("run deck.prm --restart runs/deck", scratch.path);
-  EXPECT_EQ(result.exit_status, 2);
-  EXPECT_NE(result.err.find("--restart is not available yet"), std::string::npos);
-  EXPECT_EQ(n_entries(scratch.path), 0u);
-}
-
 TEST(Command, MissingAndUnreadableDeck)
 {
   ScratchDirectory scratch("missing");

@@ -1,0 +1,210 @@
+// Checkpoint and restart through `vulnus run`: a run killed mid-way (SIGKILL, no chance to
+// clean up) or stopped (SIGTERM, writes a checkpoint and exits 143) and restarted with
+// `--restart` ends bit for bit like the uninterrupted run on the same thread count; a
+// half-written newest checkpoint is skipped; a deck that changed the physics is refused.
+#include "../app/command_runner.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <chrono>
+#include <csignal>
+#include <fcntl.h>
+#include <thread>
+#include <unistd.h>
+
+namespace
+{
+using namespace vulnus::testing;
+namespace fs = std::filesystem;
+
+/// The coarse paper scene with a rigid bullet to 1e-4 s (about 90 steps), two threads,
+/// a checkpoint every 5 steps and particle outputs every 2e-5 s.
+std::string scene_arguments(const std::string& extra = "")
+{
+  return "'" + source_dir() + "/inputs/paper/anisotropic_150ms_coarse.prm' --threads 2" +
+         " --set 'Material bullet/Model=rigid' --set 'Time/End time=1e-4'" +
+         " --set 'Output/Particle output interval=2e-5' --set 'Output/Checkpoint step interval=5' " +
+         extra;
+}
+
+/// Starts `vulnus run ...` in `directory` without waiting; stdout and stderr go to files.
+pid_t start_vulnus(const std::string& arguments, const fs::path& directory, const std::string& log)
+{
+  const std::string command = "exec '" + vulnus_binary() + "' run " + arguments + " >'" +
+                              (directory / (log + ".out")).string() + "' 2>'" +
+                              (directory / (log + ".err")).string() + "'";
+  const pid_t pid = fork();
+  if (pid == 0)
+  {
+    if (chdir(directory.c_str()) != 0)
+      _exit(127);
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  return pid;
+}
+
+int wait_for(const pid_t pid, int& signal)
+{
+  int status = 0;
+  waitpid(pid, &status, 0);
+  signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::size_t n_checkpoints(const fs::path& run)
+{
+  std::size_t n = 0;
+  if (fs::is_directory(run / "checkpoints"))
+    for (const auto& entry : fs::directory_iterator(run / "checkpoints"))
+      n += entry.path().extension() == ".chk";
+  return n;
+}
+
+/// Starts a run and sends `signal` once it has written its first checkpoint.
+void interrupt_after_first_checkpoint(const fs::path& scratch, const std::string& run, const int signal,
+                                      int& exit_status, int& killed_by)
+{
+  const pid_t pid = start_vulnus(scene_arguments("--output " + run), scratch, run);
+  ASSERT_GT(pid, 0);
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (n_checkpoints(scratch / run) == 0 && std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, signal);
+  exit_status = wait_for(pid, killed_by);
+}
+
+std::vector<double> dataset(const fs::path& file, const std::string& name)
+{
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_GE(f, 0) << file;
+  const hid_t set = H5Dopen2(f, name.c_str(), H5P_DEFAULT);
+  const hid_t space = H5Dget_space(set);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  std::vector<double> values(static_cast<std::size_t>(std::max<hssize_t>(n, 0)));
+  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+  H5Sclose(space);
+  H5Dclose(set);
+  H5Fclose(f);
+  return values;
+}
+
+nlohmann::json summary_without_timing(const fs::path& run)
+{
+  nlohmann::json s = nlohmann::json::parse(read_text(run / "summary.json"));
+  s.erase("wall_seconds");
+  s.erase("particle_steps_per_second");
+  return s;
+}
+
+/// Same summary, history and final particle state, to the bit.
+void expect_identical_runs(const fs::path& reference, const fs::path& restarted)
+{
+  EXPECT_EQ(summary_without_timing(reference), summary_without_timing(restarted));
+  EXPECT_EQ(read_text(reference / "history.csv"), read_text(restarted / "history.csv"));
+  EXPECT_EQ(read_text(reference / "particles.xdmf"), read_text(restarted / "particles.xdmf"));
+  for (const char* field : {"positions", "velocity", "deformation_gradient"})
+    EXPECT_EQ(dataset(reference / "particles_00005.h5", field),
+              dataset(restarted / "particles_00005.h5", field))
+      << field;
+}
+
+class Restart : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite()
+  {
+    scratch = std::make_unique<ScratchDirectory>("restart");
+    const CommandResult r = run_vulnus("run " + scene_arguments("--output reference"), scratch->path);
+    ASSERT_EQ(r.exit_status, 0) << r.err;
+  }
+  static void TearDownTestSuite() { scratch.reset(); }
+  static std::unique_ptr<ScratchDirectory> scratch;
+};
+std::unique_ptr<ScratchDirectory> Restart::scratch;
+
+TEST_F(Restart, KilledRunContinuesBitForBit)
+{
+  int status = 0, signal = 0;
+  interrupt_after_first_checkpoint(scratch->path, "killed", SIGKILL, status, signal);
+  ASSERT_EQ(signal, SIGKILL) << "the run ended before it could be killed";
+  EXPECT_FALSE(fs::exists(scratch->path / "killed" / "summary.json"));
+
+  const CommandResult r = run_vulnus("run " + scene_arguments("--restart killed"), scratch->path);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.out.find("restarted from"), std::string::npos);
+  expect_identical_runs(scratch->path / "reference", scratch->path / "killed");
+}
+
+TEST_F(Restart, SigtermWritesACheckpointAndTheRunContinuesBitForBit)
+{
+  int status = 0, signal = 0;
+  interrupt_after_first_checkpoint(scratch->path, "stopped", SIGTERM, status, signal);
+  ASSERT_EQ(signal, 0);
+  ASSERT_EQ(status, 128 + SIGTERM) << "the run ended before the signal came";
+  const std::string err = read_text(scratch->path / "stopped.err");
+  EXPECT_NE(err.find("stopped by SIGTERM"), std::string::npos) << err;
+  EXPECT_NE(err.find("--restart stopped"), std::string::npos) << err;
+
+  const CommandResult r = run_vulnus("run " + scene_arguments("--restart stopped"), scratch->path);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  expect_identical_runs(scratch->path / "reference", scratch->path / "stopped");
+}
+
+TEST_F(Restart, HalfWrittenNewestCheckpointIsSkipped)
+{
+  // The reference run kept its two newest checkpoints; a torn copy named as a later step and
+  // a temporary file of an interrupted write must not be taken.
+  const fs::path run = scratch->path / "torn";
+  fs::copy(scratch->path / "reference", run, fs::copy_options::recursive);
+  const fs::path newest = *fs::directory_iterator(run / "checkpoints"); // any complete one
+  fs::copy_file(newest, run / "checkpoints" / "step_9999999999.chk");
+  fs::resize_file(run / "checkpoints" / "step_9999999999.chk", fs::file_size(newest) / 2);
+  write_text(run / "checkpoints" / "step_9999999998.chk.tmp", "half");
+  fs::remove(run / "summary.json");
+
+  const CommandResult r = run_vulnus("run " + scene_arguments("--restart torn"), scratch->path);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.err.find("step_9999999999.chk' skipped: checkpoint is truncated"), std::string::npos)
+    << r.err;
+  EXPECT_EQ(r.err.find("9999999998"), std::string::npos) << r.err;
+  expect_identical_runs(scratch->path / "reference", run);
+}
+
+TEST_F(Restart, ChangedPhysicsIsRefusedNamingTheEntry)
+{
+  const fs::path run = scratch->path / "changed";
+  fs::copy(scratch->path / "reference", run, fs::copy_options::recursive);
+  const CommandResult r = run_vulnus(
+    "run " + scene_arguments("--restart changed --set 'Material tissue/Transversely isotropic hyperelastic/c1=2000'"), scratch->path);
+  EXPECT_EQ(r.exit_status, 1);
+  EXPECT_NE(r.err.find("Material tissue/Transversely isotropic hyperelastic/c1: '"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'2000' in the deck"), std::string::npos) << r.err;
+  // A longer end time or a smaller CFL is a continuation, not another scene.
+  const CommandResult longer = run_vulnus(
+    "run " + scene_arguments("--restart changed --set 'Time/End time=1.1e-4' --set 'Time/CFL=0.3'"),
+    scratch->path);
+  EXPECT_EQ(longer.exit_status, 0) << longer.err;
+}
+
+TEST(RestartRefusals, NoCheckpointHybridAndOutputTogether)
+{
+  ScratchDirectory scratch("restart_refusals");
+  fs::create_directories(scratch.path / "empty");
+  CommandResult r = run_vulnus("run " + scene_arguments("--restart empty"), scratch.path);
+  EXPECT_EQ(r.exit_status, 1);
+  EXPECT_NE(r.err.find("no checkpoint in 'empty/checkpoints'"), std::string::npos) << r.err;
+
+  r = run_vulnus("run '" + source_dir() + "/inputs/paper/anisotropic_150ms_coarse_hybrid.prm' --restart empty",
+                 scratch.path);
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.err.find("only pure-MPM runs can be restarted"), std::string::npos) << r.err;
+
+  r = run_vulnus("run deck.prm --restart a --output b", scratch.path);
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.err.find("cannot be combined with --output"), std::string::npos) << r.err;
+}
+} // namespace
