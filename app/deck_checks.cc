@@ -1,7 +1,9 @@
 // Cross-entry checks of a deck (issue 9 grows this list).
 #include "app/deck_checks.h"
 
+#include "app/scene_size.h"
 #include "materials/material_registry.h"
+#include "mpm/body_builder.h"
 
 #include <cctype>
 #include <cmath>
@@ -67,32 +69,27 @@ private:
   const EntryLocator& locator;
 };
 
-/// Axis-aligned bounding box of a body's geometry.
-void bounding_box(const mpm::BodyParameters& body, Vector3& lower, Vector3& upper)
+/// A size that guarantees a material point inside the body when it is at least the point
+/// spacing s: the smallest box edge; for round shapes the diameter of the largest ball inside,
+/// divided by sqrt(3) (a ball of radius sqrt(3)/2 s always holds a point of a lattice of
+/// spacing s).
+double resolvable_size(const mpm::BodyParameters& body)
 {
+  const double r = body.radius, L = body.length;
   switch (body.shape)
   {
   case mpm::BodyShape::box:
-    lower = body.box_min;
-    upper = body.box_max;
-    return;
+    return (body.box_max - body.box_min).minCoeff();
   case mpm::BodyShape::sphere:
-    lower = body.center - Vector3::Constant(body.radius);
-    upper = body.center + Vector3::Constant(body.radius);
-    return;
+    return 2.0 * r / std::sqrt(3.0);
   case mpm::BodyShape::cylinder:
   {
-    const Vector3 axis = body.axis.normalized();
-    const Vector3 tip = body.center + body.length * axis;
-    for (unsigned int d = 0; d < 3; ++d)
-    {
-      const double extent = body.radius * std::sqrt(std::max(0.0, 1.0 - axis[d] * axis[d]));
-      lower[d] = std::min(body.center[d], tip[d]) - extent;
-      upper[d] = std::max(body.center[d], tip[d]) + extent;
-    }
-    return;
+    const double ball = body.nose == mpm::NoseShape::flat ? std::min(r, 0.5 * L)
+                                                          : std::max(std::min(r, L - r), 0.5 * r);
+    return 2.0 * ball / std::sqrt(3.0);
   }
   }
+  return 0.0;
 }
 
 void check_grid(const mpm::SceneParameters& scene, Checker& check)
@@ -211,7 +208,7 @@ void check_bodies(const mpm::SceneParameters& scene, Checker& check)
     if (shape_ok)
     {
       Vector3 lower, upper;
-      bounding_box(body, lower, upper);
+      mpm::body_bounding_box(body, lower, upper);
       const double tolerance = 1e-9 * (scene.domain_max - scene.domain_min).norm();
       bool inside = true;
       for (unsigned int d = 0; d < 3; ++d)
@@ -222,6 +219,18 @@ void check_bodies(const mpm::SceneParameters& scene, Checker& check)
                         ") is not inside the grid domain " + point(scene.domain_min) + " to " +
                         point(scene.domain_max),
                     "move the body or enlarge Grid/Domain min and Grid/Domain max");
+      if (scene.cell_size > 0.0 && body.particles_per_cell > 0)
+      {
+        const double spacing = scene.cell_size / body.particles_per_cell;
+        const double size = resolvable_size(body);
+        check.require_all(size >= spacing,
+                          {section + (body.shape == mpm::BodyShape::box ? "Box max" : "Radius"),
+                           section + "Particles per cell", "Grid/Cell size"},
+                          "body '" + body.name + "' is too small for its point spacing " +
+                            number(spacing) + " m (cell size / particles per cell; the body's " +
+                            "smallest size is " + number(size) + " m), so it may hold no point",
+                          "use smaller cells or more Particles per cell, or enlarge the body");
+      }
     }
 
     if (body.fibers.kind == materials::FiberFieldParameters::Kind::rotating)
@@ -267,8 +276,8 @@ double overlap_depth(const mpm::BodyParameters& a, const mpm::BodyParameters& b)
     return b.radius - (b.center - nearest).norm();
   }
   Vector3 lower_a, upper_a, lower_b, upper_b;
-  bounding_box(a, lower_a, upper_a);
-  bounding_box(b, lower_b, upper_b);
+  mpm::body_bounding_box(a, lower_a, upper_a);
+  mpm::body_bounding_box(b, lower_b, upper_b);
   return (upper_a.cwiseMin(upper_b) - lower_a.cwiseMax(lower_b)).minCoeff();
 }
 
@@ -328,7 +337,7 @@ void check_body_layout(const mpm::SceneParameters& scene, Checker& check)
     if (projectile.initial_velocity.norm() == 0.0 || bodies.size() < 2)
       continue;
     Vector3 lower, upper;
-    bounding_box(projectile, lower, upper);
+    mpm::body_bounding_box(projectile, lower, upper);
     const Vector3 half = 0.5 * (upper - lower), centre = 0.5 * (upper + lower);
     bool meets = false;
     for (const mpm::BodyParameters& target : bodies)
@@ -336,7 +345,7 @@ void check_body_layout(const mpm::SceneParameters& scene, Checker& check)
       if (&target == &projectile || !shape_is_valid(target))
         continue;
       Vector3 target_lower, target_upper;
-      bounding_box(target, target_lower, target_upper);
+      mpm::body_bounding_box(target, target_lower, target_upper);
       meets = meets || ray_meets_box(centre, projectile.initial_velocity - target.initial_velocity,
                                      target_lower - half, target_upper + half);
     }
@@ -345,6 +354,25 @@ void check_body_layout(const mpm::SceneParameters& scene, Checker& check)
                     point(projectile.initial_velocity) + ") misses every other body",
                   "aim the velocity at the target, or move the projectile in front of it");
   }
+}
+/// A scene larger than this machine's memory is refused before anything is allocated.
+void check_scene_size(const mpm::SceneParameters& scene, Checker& check)
+{
+  if (!(scene.cell_size > 0.0) || !((scene.domain_max - scene.domain_min).minCoeff() > 0.0))
+    return;
+  for (const mpm::BodyParameters& body : scene.bodies)
+    if (!shape_is_valid(body))
+      return;
+  const SceneSize size = estimate_scene_size(scene);
+  const double memory = physical_memory_bytes();
+  const double gb = 1.0e9;
+  check.require_all(
+    size.box_nodes < double(std::int64_t(1) << 31) && (memory == 0.0 || size.bytes < memory),
+    {"Grid/Cell size", "Grid/Domain min", "Grid/Domain max"},
+    "the scene is too large for this machine (about " + number(size.points) + " points, " +
+      number(size.box_nodes) + " grid nodes, " + number(size.bytes / gb) + " GB; the machine has " +
+      number(memory / gb) + " GB and the grid at most 2^31 nodes)",
+    "use larger cells, a smaller domain or fewer Particles per cell");
 }
 } // namespace
 
@@ -365,6 +393,8 @@ std::vector<std::string> check_run_parameters(const RunParameters& parameters,
   check_materials(parameters.scene, check);
   check_bodies(parameters.scene, check);
   check_body_layout(parameters.scene, check);
+  if (parameters.method == Method::mpm && !parameters.hybrid.enabled)
+    check_scene_size(parameters.scene, check);
   return check.messages;
 }
 } // namespace vulnus::app

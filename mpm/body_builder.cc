@@ -3,6 +3,7 @@
 
 #include "materials/fiber_field.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -53,8 +54,12 @@ void body_bounding_box(const BodyParameters& body, Vector3& lower, Vector3& uppe
     {
       const Vector3 axis = body.axis.normalized();
       const Vector3 tip = body.center + body.length * axis;
-      lower = body.center.cwiseMin(tip).array() - body.radius;
-      upper = body.center.cwiseMax(tip).array() + body.radius;
+      for (int d = 0; d < 3; ++d)
+      {
+        const double extent = body.radius * std::sqrt(std::max(0.0, 1.0 - axis[d] * axis[d]));
+        lower[d] = std::min(body.center[d], tip[d]) - extent;
+        upper[d] = std::max(body.center[d], tip[d]) + extent;
+      }
       return;
     }
   }

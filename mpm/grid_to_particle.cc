@@ -32,6 +32,10 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
         continue;
       }
       const double lp = transfer.half_size_cells[b];
+      // Named here: clang 14 rejects the outer function's parameters inside an OpenMP loop
+      // nested in two lambdas.
+      const std::vector<Vector3>& velocity_new = fields.velocity_new;
+      const std::vector<Vector3>& velocity_old = fields.velocity;
 #pragma omp parallel for schedule(static)
       for (long p = begin; p < end; ++p)
       {
@@ -40,8 +44,8 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
         for_each_node<shape>(grid, lp, particles.position[p],
                              [&](const std::int64_t key, const double w, const Vector3&) {
                                const std::size_t e = grid.slot(key) * n_bodies + b;
-                               v_pic += w * fields.velocity_new[e];
-                               dv += w * (fields.velocity_new[e] - fields.velocity[e]);
+                               v_pic += w * velocity_new[e];
+                               dv += w * (velocity_new[e] - velocity_old[e]);
                              });
         displacement[p] = dt * v_pic;
         particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
@@ -77,13 +81,14 @@ void update_deformation_gradients(const Grid& grid, const TransferSettings& tran
         continue;
       }
       const double lp = transfer.half_size_cells[b];
+      const std::vector<Vector3>& velocity_new = fields.velocity_new; // see above
 #pragma omp parallel for schedule(static)
       for (long p = begin; p < end; ++p)
       {
         Tensor2 L = Tensor2::Zero();
         for_each_node<shape>(grid, lp, particles.position[p],
                              [&](const std::int64_t key, double, const Vector3& grad_w) {
-                               L.noalias() += fields.velocity_new[grid.slot(key) * n_bodies + b] *
+                               L.noalias() += velocity_new[grid.slot(key) * n_bodies + b] *
                                               grad_w.transpose();
                              });
         Tensor2& F = particles.deformation_gradient[p];
