@@ -12,11 +12,15 @@ namespace vulnus::app
 {
 namespace
 {
+/// A wound of fewer than three points has no shape: aspect ratio and axis are null.
 nlohmann::json face_json(const mpm::FaceWound& w)
 {
+  const bool has_shape = w.n_points >= 3;
   return {{"equivalent_diameter_m", w.equivalent_diameter},
-          {"aspect_ratio", w.aspect_ratio},
-          {"major_axis_direction", {w.major_axis[0], w.major_axis[1], w.major_axis[2]}},
+          {"aspect_ratio", has_shape ? nlohmann::json(w.aspect_ratio) : nlohmann::json()},
+          {"major_axis_direction",
+           has_shape ? nlohmann::json{w.major_axis[0], w.major_axis[1], w.major_axis[2]}
+                     : nlohmann::json()},
           {"failed_points", w.n_points},
           {"area_m2", w.area}};
 }

@@ -193,7 +193,9 @@ void TissueHyperelastic<with_fibers>::update_point(const Tensor2& F, const Vecto
     throw_inverted(J);
 
   const std::uint8_t old_flags = state.failure;
-  const std::uint8_t flags = updated_failure_flags(prm.failure, F, a0, with_fibers, old_flags);
+  std::uint8_t flags = updated_failure_flags(prm.failure, F, a0, with_fibers, old_flags);
+  if (!with_fibers && (flags & matrix_failed))
+    flags |= fiber_failed; // without fibers the failed matrix leaves nothing: total failure
   const std::uint8_t newly_failed = flags & ~old_flags;
 
   TissueStressParts parts;

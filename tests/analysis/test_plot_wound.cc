@@ -2,38 +2,15 @@
 // PNG; a directory without run files is refused with exit status 2; a run without particle
 // files still gets its tract and history pictures. Skipped only where Debian's python3 lacks
 // matplotlib or h5py.
+#include "script_shell.h"
 #include "synthetic_run.h"
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <sstream>
-#include <sys/wait.h>
 
 namespace
 {
 using namespace vulnus::testing;
-
-std::string source_directory()
-{
-  const char* from_environment = std::getenv("VULNUS_SOURCE_DIR");
-  return from_environment ? from_environment : VULNUS_DEFAULT_SOURCE_DIR;
-}
-
-/// Exit status of a shell command (-1 when it did not exit normally).
-int shell(const std::string& command)
-{
-  const int status = std::system(command.c_str());
-  return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string read_text(const std::filesystem::path& path)
-{
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 /// Runs plot-wound on `run` (PNGs into run/plots), its output into `log`.
 int plot_wound(const std::filesystem::path& run, const std::filesystem::path& log)

@@ -74,6 +74,20 @@ TEST(TissueFailure, OtherShearMeasures)
   }
 }
 
+TEST(TissueFailure, IsotropicMatrixFailureIsTotalFailure)
+{
+  // Without fibers nothing carries stress once the matrix has failed: flag 3, zero stress.
+  const IsotropicHyperelastic isotropic(TissueParameters{});
+  PointState state;
+  const double l = stretch_at_first_flag(isotropic, matrix_failed, 1.5, 50000, state);
+  EXPECT_GT(l, 1.324717957244746);
+  EXPECT_EQ(state.failure, matrix_failed | fiber_failed);
+  PointResponse response;
+  isotropic.update(isochoric_uniaxial(1.6, Vector3(0.0, 0.0, 1.0)), Vector3(0.0, 0.0, 1.0), state,
+                   response);
+  EXPECT_EQ(response.cauchy_stress.norm(), 0.0);
+}
+
 TEST(TissueFailure, FibersFailAtStretchLimit)
 {
   TissueParameters p;

@@ -1,0 +1,150 @@
+// MPM throughput of a deck (default: the coarse anisotropic 150 m/s paper scene): particle-
+// steps per second and seconds per phase, for 1 and 2 threads and linear and GIMP shape
+// functions, and resident memory per particle. All configurations in one run, so the ratios
+// compare like with like on a shared machine.
+#include "app/deck_reader.h"
+#include "mpm/solver.h"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace
+{
+using namespace vulnus;
+
+/// A line "Key:   N kB" of /proc/self/status, in bytes (0 when absent).
+double proc_status_bytes(const std::string& key)
+{
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.compare(0, key.size() + 1, key + ":") == 0)
+    {
+      std::istringstream fields(line.substr(key.size() + 1));
+      double kilobytes = 0.0;
+      fields >> kilobytes;
+      return 1024.0 * kilobytes;
+    }
+  return 0.0;
+}
+
+struct Measurement
+{
+  double point_steps_per_second = 0.0;
+  mpm::PhaseTimes phases; ///< seconds over the measured steps
+  double seconds = 0.0;
+  std::size_t points = 0, steps = 0;
+  double resident_bytes_per_point = 0.0;
+};
+
+mpm::PhaseTimes difference(const mpm::PhaseTimes& after, const mpm::PhaseTimes& before)
+{
+  mpm::PhaseTimes d;
+  d.time_step = after.time_step - before.time_step;
+  d.particle_to_grid = after.particle_to_grid - before.particle_to_grid;
+  d.grid_update = after.grid_update - before.grid_update;
+  d.grid_to_particle = after.grid_to_particle - before.grid_to_particle;
+  d.stress_update = after.stress_update - before.stress_update;
+  d.checks_and_sorting = after.checks_and_sorting - before.checks_and_sorting;
+  d.coupling = after.coupling - before.coupling;
+  return d;
+}
+
+Measurement measure(mpm::SceneParameters scene, const int threads, const mpm::ShapeFunction shape,
+                    const std::size_t warmup, const std::size_t steps)
+{
+  scene.shape_function = shape;
+  scene.end_time = 1.0; // never the limit here
+  scene.n_threads = static_cast<unsigned int>(threads);
+  omp_set_num_threads(threads);
+  const double resident_before = proc_status_bytes("VmRSS");
+  auto solver = std::make_unique<mpm::Solver>(scene);
+  for (std::size_t s = 0; s < warmup; ++s)
+    solver->advance();
+  Measurement m;
+  m.points = solver->points().size();
+  m.resident_bytes_per_point = (proc_status_bytes("VmRSS") - resident_before) / m.points;
+  const mpm::PhaseTimes before = solver->phase_times();
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t s = 0; s < steps && !solver->finished(); ++s, ++m.steps)
+    solver->advance();
+  m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m.phases = difference(solver->phase_times(), before);
+  m.point_steps_per_second = double(m.points) * m.steps / m.seconds;
+  return m;
+}
+
+void print_row(const char* label, const Measurement& m)
+{
+  const mpm::PhaseTimes& p = m.phases;
+  const double per = 1e9 / (double(m.points) * m.steps); // ns per point-step
+  std::printf("%-16s %8.2f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.0f\n", label,
+              m.point_steps_per_second / 1e6, per * p.particle_to_grid, per * p.grid_update,
+              per * p.grid_to_particle, per * p.stress_update,
+              per * (p.time_step + p.checks_and_sorting), per * p.total(),
+              m.resident_bytes_per_point);
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const std::string source = VULNUS_SOURCE_DIR;
+  std::string deck = source + "/inputs/paper/anisotropic_150ms_coarse.prm";
+  std::size_t steps = 40, warmup = 20;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string argument = argv[i];
+    if (argument == "--steps" && i + 1 < argc)
+      steps = std::stoul(argv[++i]);
+    else if (argument == "--warmup" && i + 1 < argc)
+      warmup = std::stoul(argv[++i]);
+    else if (argument.rfind("--", 0) != 0)
+      deck = argument;
+    else
+    {
+      std::cerr << "usage: throughput [DECK] [--steps N] [--warmup N]\n";
+      return 2;
+    }
+  }
+  app::RunParameters parameters;
+  try
+  {
+    parameters = app::read_run_parameters(deck);
+  }
+  catch (const app::DeckError& error)
+  {
+    for (const std::string& message : error.messages())
+      std::cerr << "throughput: " << message << '\n';
+    return 2;
+  }
+
+  std::printf("deck %s: %zu warm-up steps, then %zu measured steps per configuration\n",
+              deck.c_str(), warmup, steps);
+  std::printf("%-16s %8s %8s %8s %8s %8s %8s %8s %8s\n", "configuration", "Mpt-st/s", "P2G",
+              "grid", "G2P", "stress", "other", "total", "B/point");
+  std::printf("%-16s %8s %8s %8s %8s %8s %8s %8s %8s\n", "", "", "ns/pt-st", "(+contact)", "",
+              "", "", "", "(RSS)");
+  Measurement linear[2], gimp[2];
+  for (int t = 1; t <= 2; ++t)
+  {
+    linear[t - 1] = measure(parameters.scene, t, mpm::ShapeFunction::linear, warmup, steps);
+    print_row(t == 1 ? "linear, 1 thr" : "linear, 2 thr", linear[t - 1]);
+    gimp[t - 1] = measure(parameters.scene, t, mpm::ShapeFunction::gimp, warmup, steps);
+    print_row(t == 1 ? "GIMP, 1 thr" : "GIMP, 2 thr", gimp[t - 1]);
+  }
+  std::printf("points %zu\n", linear[0].points);
+  std::printf("2 threads / 1 thread: linear %.2f, GIMP %.2f\n",
+              linear[1].point_steps_per_second / linear[0].point_steps_per_second,
+              gimp[1].point_steps_per_second / gimp[0].point_steps_per_second);
+  std::printf("GIMP / linear (2 threads): %.2f\n",
+              gimp[1].point_steps_per_second / linear[1].point_steps_per_second);
+  std::printf("peak resident set %.0f MB, %.0f B/point (all configurations in one process)\n",
+              proc_status_bytes("VmHWM") / 1e6, proc_status_bytes("VmHWM") / linear[0].points);
+  return 0;
+}
