@@ -203,11 +203,30 @@ std::string explain(const dealii::ExceptionBase& exception, const Source& source
   return source.origin + ": " + std::regex_replace(trim(text), std::regex(" +"), " ");
 }
 
+/// deal.II does not check a value holding '{' or '}' against its pattern (the braces mark
+/// variants for its parameter loops), so the value would fail only later, when read.
+void refuse_braces(const Source& source, const EntryTable& table)
+{
+  for (const DeckStatement& statement : source.index->statements())
+  {
+    if (statement.kind != DeckStatement::Kind::set ||
+        statement.value.find_first_of("{}") == std::string::npos)
+      continue;
+    const std::string path = statement.full_path();
+    const EntryInfo* entry = table.find(path);
+    throw DeckError({source.location(statement.first_line) + ": " + path + " = '" +
+                     statement.value + "' is not valid; " +
+                     (entry ? "expected " + entry->expected + " (" + entry->documentation + ")"
+                            : std::string("'{' and '}' are not allowed in values"))});
+  }
+}
+
 /// Parse one source, turning deal.II's exceptions into DeckError.
 void parse(dealii::ParameterHandler& prm, const Source& source, const bool skip_undefined,
            const EntryTable& table, const std::vector<std::string>& material_names,
            const std::vector<std::string>& body_names)
 {
+  refuse_braces(source, table);
   try
   {
     std::istringstream in(source.text);
