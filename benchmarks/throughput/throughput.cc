@@ -80,15 +80,17 @@ Measurement measure(mpm::SceneParameters scene, const int threads, const mpm::Sh
   return m;
 }
 
-void print_row(const char* label, const Measurement& m)
+/// Memory per point is meaningful only for the first configuration: later ones reuse what
+/// the earlier ones freed.
+void print_row(const char* label, const Measurement& m, const bool first)
 {
   const mpm::PhaseTimes& p = m.phases;
   const double per = 1e9 / (double(m.points) * m.steps); // ns per point-step
-  std::printf("%-16s %8.2f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.0f\n", label,
+  std::printf("%-16s %8.2f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8s\n", label,
               m.point_steps_per_second / 1e6, per * p.particle_to_grid, per * p.grid_update,
               per * p.grid_to_particle, per * p.stress_update,
               per * (p.time_step + p.checks_and_sorting), per * p.total(),
-              m.resident_bytes_per_point);
+              first ? std::to_string(int(m.resident_bytes_per_point)).c_str() : "-");
 }
 } // namespace
 
@@ -134,9 +136,9 @@ int main(int argc, char** argv)
   for (int t = 1; t <= 2; ++t)
   {
     linear[t - 1] = measure(parameters.scene, t, mpm::ShapeFunction::linear, warmup, steps);
-    print_row(t == 1 ? "linear, 1 thr" : "linear, 2 thr", linear[t - 1]);
+    print_row(t == 1 ? "linear, 1 thr" : "linear, 2 thr", linear[t - 1], t == 1);
     gimp[t - 1] = measure(parameters.scene, t, mpm::ShapeFunction::gimp, warmup, steps);
-    print_row(t == 1 ? "GIMP, 1 thr" : "GIMP, 2 thr", gimp[t - 1]);
+    print_row(t == 1 ? "GIMP, 1 thr" : "GIMP, 2 thr", gimp[t - 1], false);
   }
   std::printf("points %zu\n", linear[0].points);
   std::printf("2 threads / 1 thread: linear %.2f, GIMP %.2f\n",
@@ -144,7 +146,10 @@ int main(int argc, char** argv)
               gimp[1].point_steps_per_second / gimp[0].point_steps_per_second);
   std::printf("GIMP / linear (2 threads): %.2f\n",
               gimp[1].point_steps_per_second / linear[1].point_steps_per_second);
-  std::printf("peak resident set %.0f MB, %.0f B/point (all configurations in one process)\n",
-              proc_status_bytes("VmHWM") / 1e6, proc_status_bytes("VmHWM") / linear[0].points);
+  std::printf("resident memory of the first scene: %.0f B/point (growth of the resident set over "
+              "building it and its warm-up steps)\n",
+              linear[0].resident_bytes_per_point);
+  std::printf("peak resident set of the process %.0f MB (libraries included)\n",
+              proc_status_bytes("VmHWM") / 1e6);
   return 0;
 }

@@ -77,15 +77,15 @@ def evaluate(runs):
                      "entrance aspect ratio %s" % _fmt(ratio),
                      None if ratio is None else ratio < CIRCULAR_BELOW))
     for name, (summary, zones) in sorted(runs.items()):
-        anisotropic = name.startswith("anisotropic")
-        rows.append(("total failure next to the tract, matrix %sfailure around it"
-                     % ("and fiber " if anisotropic else ""), name,
+        if not name.startswith("anisotropic"):
+            continue  # without fibers a failed matrix is total failure: no layers to show
+        rows.append(("total failure next to the tract, matrix and fiber failure around it", name,
                      "median distance from the axis: total %s mm, matrix %s mm (%d points), "
                      "fiber %s mm (%d points)" % (
                          radius_mm(zones, "total"), radius_mm(zones, "matrix"),
                          zones["matrix"]["count"], radius_mm(zones, "fiber"),
                          zones["fiber"]["count"]),
-                     layered(zones, anisotropic)))
+                     layered(zones)))
     for name, (summary, zones) in sorted(runs.items()):
         growth = tract_growth(summary)
         rows.append(("tract diameter grows from entrance to exit", name,
