@@ -131,6 +131,23 @@ TEST(Command, SetOverridesTakeEffect)
   EXPECT_FALSE(fs::exists(scratch.path / "runs"));
 }
 
+TEST(Command, CflAboveTheTestedRangeIsWarnedInLogAndSummary)
+{
+  ScratchDirectory scratch("cfl_warning");
+  write_text(scratch.path / "deck.prm", "subsection Grid\n  set Cell size = 0.002\nend\n");
+  const CommandResult result = run_vulnus(
+      "run deck.prm " + tiny_scene + " --output out --threads 1 --set 'Time/CFL=0.7'", scratch.path);
+  ASSERT_EQ(result.exit_status, 0) << result.err;
+  const std::string warning = "Time/CFL = 0.7 is above 0.5";
+  EXPECT_NE((result.out + result.err).find(warning), std::string::npos) << result.out << result.err;
+  EXPECT_NE(read_text(scratch.path / "out/summary.json").find(warning), std::string::npos);
+
+  const CommandResult quiet =
+      run_vulnus("run deck.prm " + tiny_scene + " --output out2 --threads 1", scratch.path);
+  ASSERT_EQ(quiet.exit_status, 0) << quiet.err;
+  EXPECT_EQ((quiet.out + quiet.err).find("is above 0.5"), std::string::npos);
+}
+
 TEST(Command, BadOverridesAreRejectedLikeDeckLines)
 {
   ScratchDirectory scratch("bad_overrides");
