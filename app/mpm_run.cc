@@ -13,6 +13,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 namespace vulnus::app
 {
@@ -26,6 +27,15 @@ std::string format_seconds(const double s)
   else
     o << std::fixed << std::setprecision(1) << s / 60 << " min";
   return o.str();
+}
+
+const materials::MaterialParameters& material_parameters(const mpm::SceneParameters& scene,
+                                                         const std::string& name)
+{
+  for (const mpm::NamedMaterial& material : scene.materials)
+    if (material.name == name)
+      return material.parameters;
+  throw std::logic_error("no material named '" + name + "' (the deck checks should have said)");
 }
 
 void log_scene(const mpm::Solver& solver, RunDirectory& directory)
@@ -49,12 +59,24 @@ void log_scene(const mpm::Solver& solver, RunDirectory& directory)
          << body.material << " (" << m.model_name() << ")";
     if (m.is_rigid())
       line << ", rigid: no stress update, no time-step limit";
+    else if (m.model_name().find("hyperelastic") != std::string::npos)
+    {
+      const materials::MaterialParameters& prm = material_parameters(scene, body.material);
+      line << (m.uses_fibers() ? "" : ", no fiber work")
+           << (prm.tissue.failure.enabled
+                 ? ", totally failed points skip the stress update"
+                 : ", failure off: no eigenvalues");
+    }
     directory.log(line.str());
   }
-  directory.log(std::string("  contact: ") +
-                (solver.uses_contact()
-                   ? "multi-velocity field, friction " + std::to_string(scene.contact.friction_coefficient)
-                   : "none (one body or disabled): no contact pass"));
+  std::ostringstream contact;
+  contact << "  contact: ";
+  if (solver.uses_contact())
+    contact << "multi-velocity field at nodes shared by bodies, friction "
+            << scene.contact.friction_coefficient;
+  else
+    contact << "none (one body or disabled): no contact pass";
+  directory.log(contact.str());
 }
 void log_checkpoint_policy(const OutputParameters& output, RunDirectory& directory)
 {

@@ -131,7 +131,7 @@ TEST(Command, SetOverridesTakeEffect)
   EXPECT_FALSE(fs::exists(scratch.path / "runs"));
 }
 
-TEST(Command, CflAboveTheTestedRangeIsWarnedInLogAndSummary)
+TEST(Command, CflAboveTheTestedRangeIsWarnedAndTheLogNamesSkippedWork)
 {
   ScratchDirectory scratch("cfl_warning");
   write_text(scratch.path / "deck.prm", "subsection Grid\n  set Cell size = 0.002\nend\n");
@@ -146,6 +146,13 @@ TEST(Command, CflAboveTheTestedRangeIsWarnedInLogAndSummary)
       run_vulnus("run deck.prm " + tiny_scene + " --output out2 --threads 1", scratch.path);
   ASSERT_EQ(quiet.exit_status, 0) << quiet.err;
   EXPECT_EQ((quiet.out + quiet.err).find("is above 0.5"), std::string::npos);
+  // The log names the work this scene skips.
+  const std::string log = read_text(scratch.path / "out2/log.txt");
+  EXPECT_NE(log.find("(transversely isotropic hyperelastic), totally failed points skip the "
+                     "stress update"),
+            std::string::npos)
+    << log;
+  EXPECT_NE(log.find("contact: multi-velocity field at nodes shared by bodies"), std::string::npos);
 }
 
 TEST(Command, BadOverridesAreRejectedLikeDeckLines)
