@@ -2,6 +2,7 @@
 #include "app/checkpoint_store.h"
 
 #include "app/atomic_file.h"
+#include "mpm/binary_io.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -14,48 +15,12 @@ namespace vulnus::app
 {
 namespace
 {
+using namespace mpm::binary;
+
 constexpr char header_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '1'};
 constexpr char trailer_tag[8] = {'V', 'U', 'L', 'N', 'E', 'N', 'D', '1'};
 constexpr const char* prefix = "step_";
 constexpr const char* suffix = ".chk";
-
-template <class T> void put(std::ostream& out, const T& value)
-{
-  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-void put_text(std::ostream& out, const std::string& text)
-{
-  put(out, static_cast<std::uint64_t>(text.size()));
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-}
-
-template <class T> void get(std::istream& in, T& value)
-{
-  in.read(reinterpret_cast<char*>(&value), sizeof(T));
-  if (!in)
-    throw std::runtime_error("it is truncated");
-}
-
-void get_text(std::istream& in, std::string& text)
-{
-  std::uint64_t n = 0;
-  get(in, n);
-  if (n > (std::uint64_t(1) << 30))
-    throw std::runtime_error("it is corrupt (text of " + std::to_string(n) + " bytes)");
-  text.assign(n, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(n));
-  if (!in)
-    throw std::runtime_error("it is truncated");
-}
-
-void expect_tag(std::istream& in, const char (&tag)[8], const char* what)
-{
-  char read[8] = {};
-  in.read(read, sizeof(read));
-  if (!in || std::memcmp(read, tag, sizeof(read)) != 0)
-    throw std::runtime_error(what);
-}
 } // namespace
 
 CheckpointStore::CheckpointStore(const std::string& run_directory, const unsigned int keep)

@@ -163,10 +163,7 @@ void check_bodies(const mpm::SceneParameters& scene, Checker& check)
   for (const mpm::BodyParameters& body : scene.bodies)
   {
     const std::string section = "Body " + body.name + "/";
-    bool known = false;
-    for (const mpm::NamedMaterial& material : scene.materials)
-      known = known || material.name == body.material;
-    check.require(known, section + "Material",
+    check.require(mpm::find_material(scene, body.material) != nullptr, section + "Material",
                   body.material.empty() ? "not given" : "no material named '" + body.material + "'",
                   "use one of the names in Scene/Materials (" + material_names + ")");
     check.require(body.density > 0.0, section + "Density", "must be > 0 (got 0)",

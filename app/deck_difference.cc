@@ -1,47 +1,21 @@
-// Entry-by-entry comparison of resolved PRM decks: `subsection` nesting gives the path,
-// `set Entry = value` the value; comments are dropped.
+// Entry-by-entry comparison of resolved PRM decks, read through the deck's statement index.
 #include "app/deck_difference.h"
 
+#include "app/line_index.h"
+
 #include <map>
-#include <sstream>
 
 namespace vulnus::app
 {
 namespace
 {
-std::string trimmed(const std::string& text)
-{
-  const std::size_t begin = text.find_first_not_of(" \t\r");
-  if (begin == std::string::npos)
-    return "";
-  const std::size_t end = text.find_last_not_of(" \t\r");
-  return text.substr(begin, end - begin + 1);
-}
-
 std::map<std::string, std::string> entries_of(const std::string& deck)
 {
   std::map<std::string, std::string> entries;
-  std::vector<std::string> sections;
-  std::istringstream in(deck);
-  std::string line;
-  while (std::getline(in, line))
-  {
-    line = trimmed(line.substr(0, line.find('#')));
-    if (line.rfind("subsection ", 0) == 0)
-      sections.push_back(trimmed(line.substr(11)));
-    else if (line == "end" && !sections.empty())
-      sections.pop_back();
-    else if (line.rfind("set ", 0) == 0)
-    {
-      const std::size_t equals = line.find('=');
-      if (equals == std::string::npos)
-        continue;
-      std::string path;
-      for (const std::string& section : sections)
-        path += section + "/";
-      entries[path + trimmed(line.substr(4, equals - 4))] = trimmed(line.substr(equals + 1));
-    }
-  }
+  const LineIndex index(deck, "deck");
+  for (const DeckStatement& statement : index.statements())
+    if (statement.kind == DeckStatement::Kind::set && statement.has_equals)
+      entries[statement.full_path()] = statement.value;
   return entries;
 }
 

@@ -13,7 +13,6 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
-#include <stdexcept>
 
 namespace vulnus::app
 {
@@ -27,15 +26,6 @@ std::string format_seconds(const double s)
   else
     o << std::fixed << std::setprecision(1) << s / 60 << " min";
   return o.str();
-}
-
-const materials::MaterialParameters& material_parameters(const mpm::SceneParameters& scene,
-                                                         const std::string& name)
-{
-  for (const mpm::NamedMaterial& material : scene.materials)
-    if (material.name == name)
-      return material.parameters;
-  throw std::logic_error("no material named '" + name + "' (the deck checks should have said)");
 }
 
 void log_scene(const mpm::Solver& solver, RunDirectory& directory)
@@ -61,9 +51,10 @@ void log_scene(const mpm::Solver& solver, RunDirectory& directory)
       line << ", rigid: no stress update, no time-step limit";
     else if (m.model_name().find("hyperelastic") != std::string::npos)
     {
-      const materials::MaterialParameters& prm = material_parameters(scene, body.material);
+      const bool failure_on =
+        mpm::find_material(scene, body.material)->parameters.tissue.failure.enabled;
       line << (m.uses_fibers() ? "" : ", no fiber work")
-           << (prm.tissue.failure.enabled
+           << (failure_on
                  ? ", totally failed points skip the stress update"
                  : ", failure off: no eigenvalues");
     }

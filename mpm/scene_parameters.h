@@ -118,4 +118,13 @@ struct SceneParameters
   /// when false, the run stops as a blow-up.
   bool remove_points_leaving_grid = false;
 };
+
+/// The material named `name`, or nullptr.
+inline const NamedMaterial* find_material(const SceneParameters& scene, const std::string& name)
+{
+  for (const NamedMaterial& material : scene.materials)
+    if (material.name == name)
+      return &material;
+  return nullptr;
+}
 } // namespace vulnus::mpm

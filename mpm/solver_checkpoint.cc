@@ -2,52 +2,18 @@
 // refuse a checkpoint of another scene), every point array and the accumulated scalars.
 #include "mpm/solver.h"
 
-#include <cstring>
+#include "mpm/binary_io.h"
+
 #include <istream>
 #include <ostream>
-#include <type_traits>
 
 namespace vulnus::mpm
 {
 namespace
 {
+using namespace binary;
+
 constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '1'};
-
-template <class T>
-void put(std::ostream& out, const T& value)
-{
-  static_assert(std::is_standard_layout_v<T>); // fixed-size Eigen types and PODs
-  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-template <class T>
-void put_vector(std::ostream& out, const std::vector<T>& values)
-{
-  static_assert(std::is_standard_layout_v<T>); // fixed-size Eigen types and PODs
-  put(out, static_cast<std::uint64_t>(values.size()));
-  out.write(reinterpret_cast<const char*>(values.data()), sizeof(T) * values.size());
-}
-
-template <class T>
-void get(std::istream& in, T& value)
-{
-  in.read(reinterpret_cast<char*>(&value), sizeof(T));
-  if (!in)
-    throw std::runtime_error("checkpoint is truncated");
-}
-
-template <class T>
-void get_vector(std::istream& in, std::vector<T>& values)
-{
-  std::uint64_t n = 0;
-  get(in, n);
-  if (n > (std::uint64_t(1) << 34))
-    throw std::runtime_error("checkpoint is corrupt (array length " + std::to_string(n) + ")");
-  values.resize(n);
-  in.read(reinterpret_cast<char*>(values.data()), sizeof(T) * n);
-  if (!in)
-    throw std::runtime_error("checkpoint is truncated");
-}
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -85,10 +51,7 @@ void Solver::save(std::ostream& out) const
 
 void Solver::restore(std::istream& in)
 {
-  char tag[sizeof(magic)];
-  in.read(tag, sizeof(tag));
-  if (!in || std::memcmp(tag, magic, sizeof(magic)) != 0)
-    throw std::runtime_error("not a vulnus MPM checkpoint (bad header)");
+  expect_tag(in, magic, "not a vulnus MPM checkpoint (bad header)");
   std::uint64_t n_bodies = 0;
   get(in, n_bodies);
   if (n_bodies != parameters.bodies.size())
@@ -124,9 +87,7 @@ void Solver::restore(std::istream& in)
   get(in, removed);
   get(in, outflow);
   get(in, outflow_p);
-  in.read(tag, sizeof(tag));
-  if (!in || std::memcmp(tag, magic, sizeof(magic)) != 0)
-    throw std::runtime_error("checkpoint is incomplete (no trailer)");
+  expect_tag(in, magic, "checkpoint is incomplete (no trailer)");
   const std::size_t n = loaded.position.size();
   if (loaded.body_begin.size() != n_bodies + 1 || loaded.body_begin.back() != n ||
       loaded.state.size() != n || loaded.id.size() != n || rigid_velocity.size() != n_bodies ||

@@ -6,17 +6,9 @@ across, so one cell more along one axis changes the aspect ratio by about 11 %; 
 called circular below 1.25 (two cells) and elliptic above."""
 import numpy as np
 
+from .run_data import summary_value
+
 CIRCULAR_BELOW = 1.25
-
-
-def get(summary, *keys):
-    """summary[k1][k2]...; None when any key is missing."""
-    node = summary
-    for key in keys:
-        if not isinstance(node, dict) or key not in node:
-            return None
-        node = node[key]
-    return node
 
 
 def failure_zones(wound):
@@ -45,7 +37,7 @@ def layered(zones, anisotropic=True):
 def tract_growth(summary):
     """Mean total-failure area of the deepest third of the tract over the shallowest third
     (> 1: the tract widens towards the exit); None without a tract."""
-    area = get(summary, "tract", "area_m2") or []
+    area = summary_value(summary, "tract", "area_m2") or []
     third = len(area) // 3
     if third == 0:
         return None
@@ -54,7 +46,7 @@ def tract_growth(summary):
 
 
 def _ratio(summary, face):
-    value = get(summary, face + "_wound", "aspect_ratio")
+    value = summary_value(summary, face + "_wound", "aspect_ratio")
     return None if value is None else float(value)
 
 

@@ -11,6 +11,16 @@ import numpy as np
 PARTICLE_FILE = re.compile(r"^particles_(\d+)\.h5$")
 
 
+def summary_value(summary, *keys):
+    """summary[k1][k2]...; None when any key is missing."""
+    node = summary
+    for key in keys:
+        if not isinstance(node, dict) or key not in node:
+            return None
+        node = node[key]
+    return node
+
+
 def read_deck(path):
     """Entries of a deal.II ParameterHandler deck as {'Section/Sub/Entry': 'value'}."""
     entries, sections = {}, []

@@ -5,15 +5,7 @@ import csv
 import numpy as np
 
 from . import style
-
-
-def _get(summary, *keys):
-    node = summary
-    for key in keys:
-        if not isinstance(node, dict) or key not in node:
-            return None
-        node = node[key]
-    return node
+from .run_data import summary_value as _get
 
 
 # (CSV header, how to read it from summary.json)
