@@ -23,6 +23,8 @@ void sync_file(const std::string& path)
   ::close(fd);
 }
 
+} // namespace
+
 void rename_into_place(const std::string& tmp, const std::string& path)
 {
   sync_file(tmp);
@@ -33,7 +35,6 @@ void rename_into_place(const std::string& tmp, const std::string& path)
     throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "': " + reason);
   }
 }
-} // namespace
 
 std::string temporary_name(const std::string& path)
 {

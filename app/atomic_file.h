@@ -21,4 +21,7 @@ void write_file_atomically_by_name(const std::string& path,
 
 /// Name of the temporary file used for `path`.
 std::string temporary_name(const std::string& path);
+
+/// Moves a finished temporary file to `path` (data synced first, then an atomic rename).
+void rename_into_place(const std::string& tmp, const std::string& path);
 } // namespace vulnus::app

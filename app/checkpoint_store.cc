@@ -23,8 +23,9 @@ constexpr const char* prefix = "step_";
 constexpr const char* suffix = ".chk";
 } // namespace
 
-CheckpointStore::CheckpointStore(const std::string& run_directory, const unsigned int keep)
-    : folder((std::filesystem::path(run_directory) / "checkpoints").string()), keep(std::max(1u, keep))
+CheckpointStore::CheckpointStore(const std::string& run_directory, const unsigned int keep,
+                                 const std::string& folder_name)
+    : folder((std::filesystem::path(run_directory) / folder_name).string()), keep(std::max(1u, keep))
 {
 }
 

@@ -26,8 +26,9 @@ struct RunProgress
 class CheckpointStore
 {
 public:
-  /// Checkpoints under `run_directory/checkpoints` (created on the first write).
-  explicit CheckpointStore(const std::string& run_directory, unsigned int keep = 2);
+  /// Checkpoints under `run_directory/folder` (created on the first write).
+  explicit CheckpointStore(const std::string& run_directory, unsigned int keep = 2,
+                           const std::string& folder = "checkpoints");
 
   /// Writes the checkpoint of `step` atomically: progress, then `write_state` fills in the
   /// solver's state. Removes older checkpoints beyond the newest `keep`. Returns the path.

@@ -1,6 +1,8 @@
 // The subcommands of `vulnus`: run, check, --print-parameters.
 #include "app/commands.h"
 
+#include "app/mpi_launch.h"
+
 #include "app/atomic_file.h"
 #include "app/deck_reader.h"
 #include "app/run_directory.h"
@@ -31,7 +33,8 @@ int run_command(const CommandLine& line)
   }
   catch (const DeckError& error)
   {
-    report(error);
+    if (launcher_rank() == 0)
+      report(error);
     return 2;
   }
   parameters.output.restart = !line.restart_directory.empty();
@@ -46,7 +49,7 @@ int run_command(const CommandLine& line)
   {
     const std::string path = parameters.output.directory.empty() ? default_run_directory(line.deck)
                                                                  : parameters.output.directory;
-    RunDirectory directory(path);
+    RunDirectory directory(path, launcher_rank() == 0);
     if (!parameters.output.restart) // a restart writes it once the checkpoint matches the deck
       directory.write_deck_used(parameters.resolved_deck);
     directory.log(std::string("vulnus ") + VULNUS_VERSION + " run " + line.deck +

@@ -1,6 +1,9 @@
 // Cross-entry checks of a deck (issue 9 grows this list).
 #include "app/deck_checks.h"
 
+#include "app/mpi_launch.h"
+#include "mpm/slab_partition.h"
+
 #include "app/scene_size.h"
 #include "materials/material_registry.h"
 #include "mpm/body_builder.h"
@@ -105,6 +108,27 @@ void check_grid(const mpm::SceneParameters& scene, Checker& check)
                     "swap or correct the corners");
       break;
     }
+}
+
+/// A distributed pure-MPM run gives each rank a slab of at least
+/// mpm::SlabPartition::min_layers_per_rank cell layers along one axis.
+void check_rank_count(const mpm::SceneParameters& scene, Checker& check)
+{
+  const int n_ranks = launcher_size();
+  if (n_ranks <= 1 || !(scene.cell_size > 0.0))
+    return;
+  long widest = 0;
+  for (unsigned int d = 0; d < 3; ++d)
+    widest = std::max(widest, static_cast<long>(std::ceil(
+                                (scene.domain_max[d] - scene.domain_min[d]) / scene.cell_size - 1e-9)));
+  const long needed = long(n_ranks) * mpm::SlabPartition::min_layers_per_rank;
+  check.require(widest >= needed, "Grid/Cell size",
+                "the grid has at most " + std::to_string(widest) +
+                  " cell layers along an axis, fewer than " +
+                  std::to_string(mpm::SlabPartition::min_layers_per_rank) + " per rank for " +
+                  std::to_string(n_ranks) + " MPI ranks (each rank takes a slab of layers)",
+                "run on at most " + std::to_string(widest / mpm::SlabPartition::min_layers_per_rank) +
+                  " ranks or use smaller cells");
 }
 
 void check_time(const RunParameters& p, Checker& check)
@@ -391,7 +415,10 @@ std::vector<std::string> check_run_parameters(const RunParameters& parameters,
   check_bodies(parameters.scene, check);
   check_body_layout(parameters.scene, check);
   if (parameters.method == Method::mpm && !parameters.hybrid.enabled)
+  {
     check_scene_size(parameters.scene, check);
+    check_rank_count(parameters.scene, check);
+  }
   return check.messages;
 }
 } // namespace vulnus::app

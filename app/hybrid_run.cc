@@ -145,8 +145,8 @@ int run_hybrid_scene(const RunParameters& parameters, RunDirectory& directory)
   for (const std::string& w : totals.warnings)
     directory.warn(w);
 
-  nlohmann::json summary = mpm_summary(mpm_side, totals);
   const mpm::SceneDiagnostics m = mpm_side.diagnostics();
+  nlohmann::json summary = mpm_summary(mpm_side, totals, mpm_side.points(), m);
   const double energy = hybrid_scene_energy(solver, m, fe);
   const coupling::InterfaceLedger& ledger = solver.ledger();
   summary["method"] = "hybrid";

@@ -62,7 +62,7 @@ std::vector<double> mpm_history_row(const mpm::Solver& solver, const mpm::SceneD
           force[1],
           force[2],
           double(solver.contact_nodes()),
-          double(solver.active_nodes()),
-          double(solver.points().size())};
+          double(solver.active_nodes_all_ranks()),
+          double(solver.n_points_all_ranks())};
 }
 } // namespace vulnus::app

@@ -28,24 +28,37 @@ std::string format_seconds(const double s)
   return o.str();
 }
 
+/// Collective: point counts are summed over the ranks.
 void log_scene(const mpm::Solver& solver, RunDirectory& directory)
 {
   const mpm::SceneParameters& scene = solver.scene();
   const mpm::Particles& p = solver.points();
+  std::vector<std::uint64_t> body_points(p.n_bodies());
+  for (std::size_t b = 0; b < p.n_bodies(); ++b)
+    body_points[b] = p.end_of(b) - p.begin_of(b);
+  solver.rank_group().sum(body_points.data(), static_cast<int>(body_points.size()));
   std::ostringstream o;
-  o << "MPM scene: " << p.size() << " points, cell size " << scene.cell_size << " m, grid "
+  o << "MPM scene: " << solver.n_points_all_ranks() << " points, cell size " << scene.cell_size << " m, grid "
     << solver.background_grid().cells()[0] << " x " << solver.background_grid().cells()[1]
     << " x " << solver.background_grid().cells()[2] << " cells, "
     << (scene.shape_function == mpm::ShapeFunction::linear ? "linear" : "GIMP")
     << " shape functions, " << (scene.update_scheme == mpm::UpdateScheme::musl ? "MUSL" : "USL")
     << ", " << omp_get_max_threads() << " thread(s)";
+  if (solver.rank_group().distributed())
+  {
+    o << " on each of " << solver.rank_group().size() << " ranks; slabs along axis "
+      << solver.slabs().axis() << " from cell layers";
+    for (int r = 1; r < solver.rank_group().size(); ++r)
+      o << ' ' << solver.slabs().first_layers()[r];
+    o << ", re-cut to balance the points every " << scene.sort_interval << " steps";
+  }
   directory.log(o.str());
   for (std::size_t b = 0; b < p.n_bodies(); ++b)
   {
     const mpm::BodyParameters& body = scene.bodies[b];
     const materials::Material& m = solver.body_material(b);
     std::ostringstream line;
-    line << "  body " << body.name << ": " << p.end_of(b) - p.begin_of(b) << " points, material "
+    line << "  body " << body.name << ": " << body_points[b] << " points, material "
          << body.material << " (" << m.model_name() << ")";
     if (m.is_rigid())
       line << ", rigid: no stress update, no time-step limit";
@@ -83,7 +96,8 @@ void log_checkpoint_policy(const OutputParameters& output, RunDirectory& directo
 }
 } // namespace
 
-int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
+int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory,
+                  const MPI_Comm communicator)
 {
   if (parameters.scene.n_threads > 0)
     omp_set_num_threads(static_cast<int>(parameters.scene.n_threads));
@@ -93,13 +107,16 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   };
 
-  mpm::Solver solver(parameters.scene);
+  mpm::Solver solver(parameters.scene, communicator);
+  const mpm::RankGroup& ranks = solver.rank_group();
   log_scene(solver, directory);
+  const std::size_t n_points_at_start = solver.n_points_all_ranks();
 
   RunTotals totals;
+  const mpm::SceneDiagnostics initial = solver.diagnostics();
   if (solver.projectile() >= 0) // from the initial state, before any restart
   {
-    const mpm::BodySummary b = solver.diagnostics().bodies[solver.projectile()];
+    const mpm::BodySummary b = initial.bodies[solver.projectile()];
     totals.projectile_initial_speed = b.velocity.dot(solver.flight_direction());
     totals.projectile_initial_kinetic_energy = b.kinetic_energy;
   }
@@ -117,7 +134,7 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
     totals.warnings.push_back(message.str());
   }
 
-  MpmRunFiles files(parameters, directory);
+  MpmRunFiles files(parameters, directory, ranks);
   files.start(solver);
   log_checkpoint_policy(parameters.output, directory);
 
@@ -125,7 +142,8 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
   int stop_signal = 0;
   while (!solver.finished())
   {
-    if ((stop_signal = pending_stop_signal()) != 0)
+    // Ranks may see a signal at different steps: stop together on the first one seen.
+    if ((stop_signal = static_cast<int>(ranks.max(pending_stop_signal()))) != 0)
     {
       const std::string path = files.write_checkpoint(solver, wall_seconds());
       directory.warn(std::string("stopped by ") + stop_signal_name(stop_signal) + " at step " +
@@ -146,7 +164,7 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
       break;
     }
     files.after_step(solver);
-    const double wall = wall_seconds();
+    const double wall = ranks.max(wall_seconds()); // the same on every rank
     if (files.checkpoint_due(solver, wall))
       directory.log("checkpoint: " + files.write_checkpoint(solver, wall));
     if (wall - last_progress >= 5.0)
@@ -156,7 +174,7 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
       std::ostringstream o;
       o << "t = " << std::scientific << std::setprecision(3) << solver.time() << " s, step "
         << solver.step_count() << ", dt = " << solver.last_time_step() << " s, "
-        << solver.points().size() << " points, time left <= "
+        << n_points_at_start - solver.removed_points() << " points, time left <= "
         << format_seconds((parameters.scene.end_time - solver.time()) / rate);
       directory.log(o.str());
     }
@@ -181,7 +199,12 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
   for (const std::string& w : totals.warnings)
     directory.warn(w);
 
-  const nlohmann::json summary = mpm_summary(solver, totals);
+  const mpm::Particles all_points = solver.gather_points();
+  const mpm::SceneDiagnostics final_state = solver.diagnostics();
+  totals.mpi_bytes_sent = ranks.sum(ranks.bytes_sent());
+  if (!directory.writes_files())
+    return totals.completed ? 0 : 1;
+  const nlohmann::json summary = mpm_summary(solver, totals, all_points, final_state);
   write_summary_json(directory.file("summary.json"), summary);
 
   const mpm::PhaseTimes& t = solver.phase_times();
@@ -190,7 +213,7 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory)
     << " s in " << totals.wall_seconds << " s wall, "
     << summary["particle_steps_per_second"].get<double>() << " point-steps/s; phases (s): "
     << "time step " << t.time_step << ", particle-to-grid " << t.particle_to_grid
-    << ", grid update " << t.grid_update << ", grid-to-particle " << t.grid_to_particle
+    << ", grid update " << t.grid_update << ", contact " << t.contact << ", grid-to-particle " << t.grid_to_particle
     << ", stress " << t.stress_update << ", checks " << t.checks_and_sorting;
   directory.log(o.str());
   std::ostringstream e;

@@ -20,10 +20,28 @@ const std::vector<std::string> restart_may_change = {
   "Time/Stop when projectile exits"};
 } // namespace
 
-MpmRunFiles::MpmRunFiles(const RunParameters& parameters, RunDirectory& directory)
-    : parameters(parameters), directory(directory), output(directory.path()),
-      checkpoints(directory.path(), parameters.output.checkpoints_kept)
+namespace
 {
+/// Each rank of a distributed run keeps its own checkpoints in checkpoints/rank_R.
+std::string checkpoint_folder(const mpm::RankGroup& ranks)
+{
+  return ranks.distributed() ? "checkpoints/rank_" + std::to_string(ranks.rank()) : "checkpoints";
+}
+} // namespace
+
+MpmRunFiles::MpmRunFiles(const RunParameters& parameters, RunDirectory& directory,
+                         const mpm::RankGroup& ranks)
+    : parameters(parameters), directory(directory), ranks(ranks),
+      output(directory.path(), "particles", ranks.communicator()),
+      checkpoints(directory.path(), parameters.output.checkpoints_kept, checkpoint_folder(ranks))
+{
+}
+
+void MpmRunFiles::add_history_row(const mpm::Solver& solver)
+{
+  const std::vector<double> row = mpm_history_row(solver, solver.diagnostics()); // collective
+  if (history)
+    history->add_row(row);
 }
 
 void MpmRunFiles::start(mpm::Solver& solver)
@@ -33,11 +51,12 @@ void MpmRunFiles::start(mpm::Solver& solver)
     restart(solver);
     return;
   }
-  history = std::make_unique<CsvHistory>(directory.file("history.csv"), mpm_history_columns());
+  if (directory.writes_files())
+    history = std::make_unique<CsvHistory>(directory.file("history.csv"), mpm_history_columns());
   output.write(solver.time(), mpm_snapshot(solver));
   const double interval = parameters.output.particle_interval;
   next_output = interval > 0 ? interval : parameters.scene.end_time * 2;
-  history->add_row(mpm_history_row(solver, solver.diagnostics()));
+  add_history_row(solver);
 }
 
 void MpmRunFiles::restart(mpm::Solver& solver)
@@ -46,6 +65,11 @@ void MpmRunFiles::restart(mpm::Solver& solver)
   const RunProgress progress =
     checkpoints.read_newest([&](std::istream& in) { solver.restore(in); },
                             [&](const std::string& line) { directory.warn(line); }, used);
+  const double step = static_cast<double>(solver.step_count());
+  if (ranks.max(step) != -ranks.max(-step))
+    throw std::runtime_error("--restart: the ranks' newest complete checkpoints are of different "
+                             "steps (one rank's newest is damaged); remove the newer ones under " +
+                             directory.file("checkpoints") + " so that every rank has the same newest step");
   const std::string difference =
     first_deck_difference(progress.resolved_deck, parameters.resolved_deck, restart_may_change);
   if (!difference.empty())
@@ -55,8 +79,9 @@ void MpmRunFiles::restart(mpm::Solver& solver)
   directory.write_deck_used(parameters.resolved_deck);
   std::istringstream records(progress.output_records);
   output.restore_records(records);
-  history = std::make_unique<CsvHistory>(
-    CsvHistory::resume(directory.file("history.csv"), mpm_history_columns(), progress.history_bytes));
+  if (directory.writes_files())
+    history = std::make_unique<CsvHistory>(CsvHistory::resume(
+      directory.file("history.csv"), mpm_history_columns(), progress.history_bytes));
   next_output = progress.next_output;
   wall_before_restart = progress.wall_seconds;
   newest_checkpoint = used;
@@ -70,7 +95,7 @@ void MpmRunFiles::restart(mpm::Solver& solver)
 void MpmRunFiles::after_step(const mpm::Solver& solver)
 {
   if (solver.step_count() % parameters.output.history_interval == 0)
-    history->add_row(mpm_history_row(solver, solver.diagnostics()));
+    add_history_row(solver);
   if (solver.time() >= next_output * (1 - 1e-12))
   {
     output.write(solver.time(), mpm_snapshot(solver));
@@ -80,9 +105,10 @@ void MpmRunFiles::after_step(const mpm::Solver& solver)
 
 void MpmRunFiles::finish(const mpm::Solver& solver)
 {
-  history->add_row(mpm_history_row(solver, solver.diagnostics()));
+  add_history_row(solver);
   output.write(solver.time(), mpm_snapshot(solver));
-  history->flush();
+  if (history)
+    history->flush();
 }
 
 bool MpmRunFiles::checkpoint_due(const mpm::Solver& solver, const double run_wall_seconds) const
@@ -97,11 +123,12 @@ bool MpmRunFiles::checkpoint_due(const mpm::Solver& solver, const double run_wal
 
 std::string MpmRunFiles::write_checkpoint(const mpm::Solver& solver, const double run_wall_seconds)
 {
-  history->flush();
+  if (history)
+    history->flush();
   RunProgress progress;
   progress.resolved_deck = parameters.resolved_deck;
   progress.next_output = next_output;
-  progress.history_bytes = history->bytes_written();
+  progress.history_bytes = history ? history->bytes_written() : 0;
   progress.wall_seconds = wall_before_restart + run_wall_seconds;
   std::ostringstream records;
   output.save_records(records);

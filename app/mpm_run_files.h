@@ -18,7 +18,8 @@ namespace vulnus::app
 class MpmRunFiles
 {
 public:
-  MpmRunFiles(const RunParameters& parameters, RunDirectory& directory);
+  /// Every rank of a distributed run builds one; the calls below are collective then.
+  MpmRunFiles(const RunParameters& parameters, RunDirectory& directory, const mpm::RankGroup& ranks);
 
   /// A fresh run: the first particle output and history row. With `Output.restart`: the
   /// solver, history and output series continue from the newest complete checkpoint (throws
@@ -47,12 +48,14 @@ public:
 
 private:
   void restart(mpm::Solver& solver);
+  void add_history_row(const mpm::Solver& solver);
 
   const RunParameters& parameters;
   RunDirectory& directory;
+  const mpm::RankGroup& ranks;
   ParticleOutput output;
   CheckpointStore checkpoints;
-  std::unique_ptr<CsvHistory> history;
+  std::unique_ptr<CsvHistory> history; ///< rank 0 only
   double next_output = 0.0;
   double wall_before_restart = 0.0;
   double wall_at_last_checkpoint = 0.0;

@@ -26,10 +26,9 @@ nlohmann::json face_json(const mpm::FaceWound& w)
 }
 } // namespace
 
-nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals)
+nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
+                           const mpm::Particles& p, const mpm::SceneDiagnostics& d)
 {
-  const mpm::Particles& p = solver.points();
-  const mpm::SceneDiagnostics d = solver.diagnostics();
   const mpm::Vector3 axis = solver.flight_direction();
   const int projectile = solver.projectile();
 
@@ -62,6 +61,7 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals)
   if (!totals.completed)
     j["error"] = totals.error;
   j["particles"] = p.size();
+  j["mpi"] = {{"ranks", solver.rank_group().size()}, {"bytes_sent", totals.mpi_bytes_sent}};
   j["fe_cells"] = 0;
   j["steps"] = solver.step_count();
   j["time_s"] = solver.time();

@@ -19,7 +19,11 @@ struct RunTotals
   bool completed = true;
   std::string error; ///< blow-up message when not completed
   std::vector<std::string> warnings;
+  std::uint64_t mpi_bytes_sent = 0; ///< over all ranks
 };
 
-nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals);
+/// `points`: every point of the scene (Solver::gather_points on rank 0 of a distributed run),
+/// `d`: the diagnostics over all ranks.
+nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
+                           const mpm::Particles& points, const mpm::SceneDiagnostics& d);
 } // namespace vulnus::app

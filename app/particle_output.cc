@@ -62,17 +62,38 @@ void check(const herr_t status, const std::string& what)
     throw std::runtime_error("HDF5: cannot " + what);
 }
 
-void write_dataset(const hid_t file, const std::string& name, const std::size_t n_rows,
+/// Where this process's rows go in the file's datasets.
+struct RowRange
+{
+  std::size_t first = 0, count = 0, total = 0;
+  hid_t transfer = H5P_DEFAULT; ///< collective MPI-IO transfer in parallel files
+};
+
+void write_dataset(const hid_t file, const std::string& name, const RowRange& rows,
                    const unsigned int n_columns, const hid_t type, const void* data)
 {
-  const hsize_t dims[2] = {static_cast<hsize_t>(n_rows), static_cast<hsize_t>(n_columns)};
-  const Handle space(H5Screate_simple(n_columns == 1 ? 1 : 2, dims, nullptr), H5Sclose,
+  const int rank = n_columns == 1 ? 1 : 2;
+  const hsize_t dims[2] = {static_cast<hsize_t>(rows.total), static_cast<hsize_t>(n_columns)};
+  const Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose,
                      "create a data space for '" + name + "'");
   const Handle set(
       H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
       "create dataset '" + name + "'");
-  if (n_rows > 0)
-    check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write dataset '" + name + "'");
+  if (rows.total == 0)
+    return;
+  const hsize_t start[2] = {static_cast<hsize_t>(rows.first), 0};
+  const hsize_t count[2] = {static_cast<hsize_t>(rows.count), static_cast<hsize_t>(n_columns)};
+  const Handle memory(H5Screate_simple(rank, count, nullptr), H5Sclose,
+                      "create a memory space for '" + name + "'");
+  if (rows.count == 0)
+  {
+    check(H5Sselect_none(space), "select no rows of '" + name + "'");
+    check(H5Sselect_none(memory), "select no rows of '" + name + "'");
+  }
+  else
+    check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr),
+          "select rows of '" + name + "'");
+  check(H5Dwrite(set, type, memory, space, rows.transfer, data), "write dataset '" + name + "'");
 }
 
 std::string dimensions(const std::size_t n, const unsigned int n_columns)
@@ -145,11 +166,23 @@ void ParticleSnapshot::add_integer(const std::string& name, const std::int32_t* 
 }
 
 void write_particle_hdf5(const std::string& path, const double time,
-                         const ParticleSnapshot& snapshot)
+                         const ParticleSnapshot& snapshot, const MPI_Comm communicator,
+                         const std::size_t first_row, const std::size_t total_rows)
 {
   // Report errors through exceptions, not HDF5's stack dump on stderr.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+  int n_ranks = 1;
+  if (communicator != MPI_COMM_NULL)
+    MPI_Comm_size(communicator, &n_ranks);
+  const bool parallel = n_ranks > 1;
+  const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create file access properties");
+  const Handle transfer(H5Pcreate(H5P_DATASET_XFER), H5Pclose, "create transfer properties");
+  if (parallel)
+  {
+    check(H5Pset_fapl_mpio(access, communicator, MPI_INFO_NULL), "use MPI-IO");
+    check(H5Pset_dxpl_mpio(transfer, H5FD_MPIO_COLLECTIVE), "use collective MPI-IO");
+  }
+  const Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose,
                     "create file '" + path + "'");
   {
     const Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar data space");
@@ -159,19 +192,27 @@ void write_particle_hdf5(const std::string& path, const double time,
     check(H5Awrite(attribute, H5T_NATIVE_DOUBLE, &time), "write attribute 'time'");
   }
   const std::size_t n = snapshot.n_particles();
-  write_dataset(file, "positions", n, 3, H5T_NATIVE_DOUBLE, snapshot.positions().data());
+  RowRange rows{parallel ? first_row : 0, n, parallel ? total_rows : n,
+                parallel ? hid_t(transfer) : H5P_DEFAULT};
+  write_dataset(file, "positions", rows, 3, H5T_NATIVE_DOUBLE, snapshot.positions().data());
   for (const ParticleSnapshot::Field& field : snapshot.fields())
     if (field.kind == ParticleSnapshot::FieldKind::integer)
-      write_dataset(file, field.name, n, 1, H5T_NATIVE_INT32, field.integers.data());
+      write_dataset(file, field.name, rows, 1, H5T_NATIVE_INT32, field.integers.data());
     else
-      write_dataset(file, field.name, n, n_components(field.kind), H5T_NATIVE_DOUBLE,
+      write_dataset(file, field.name, rows, n_components(field.kind), H5T_NATIVE_DOUBLE,
                     field.values.data());
   check(H5Fflush(file, H5F_SCOPE_LOCAL), "flush '" + path + "'");
 }
 
-ParticleOutput::ParticleOutput(const std::string& directory, const std::string& base)
-    : directory(directory), base(base)
+ParticleOutput::ParticleOutput(const std::string& directory, const std::string& base,
+                               const MPI_Comm communicator)
+    : directory(directory), base(base), comm(communicator)
 {
+  if (comm != MPI_COMM_NULL)
+  {
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &n_ranks);
+  }
 }
 
 std::string ParticleOutput::xdmf_path() const
@@ -185,10 +226,26 @@ std::string ParticleOutput::write(const double time, const ParticleSnapshot& sna
   std::snprintf(number, sizeof(number), "%05u", n_outputs());
   const std::string file_name = base + "_" + number + ".h5";
   const std::string path = (std::filesystem::path(directory) / file_name).string();
-  write_file_atomically_by_name(path, [&](const std::string& tmp)
-                                { write_particle_hdf5(tmp, time, snapshot); });
+  std::size_t n_total = snapshot.n_particles();
+  if (n_ranks == 1)
+    write_file_atomically_by_name(path, [&](const std::string& tmp)
+                                  { write_particle_hdf5(tmp, time, snapshot); });
+  else
+  {
+    unsigned long long mine = snapshot.n_particles(), before = 0, total = 0;
+    MPI_Exscan(&mine, &before, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+    MPI_Allreduce(&mine, &total, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+    if (rank == 0)
+      before = 0; // MPI_Exscan leaves rank 0's result undefined
+    n_total = total;
+    const std::string tmp = temporary_name(path);
+    write_particle_hdf5(tmp, time, snapshot, comm, before, total);
+    MPI_Barrier(comm);
+    if (rank == 0)
+      rename_into_place(tmp, path);
+  }
 
-  Record record{time, file_name, snapshot.n_particles(), {}};
+  Record record{time, file_name, n_total, {}};
   for (const ParticleSnapshot::Field& field : snapshot.fields())
     record.fields.push_back(FieldRecord{field.name, field.kind});
   records.push_back(record);
@@ -255,6 +312,8 @@ void ParticleOutput::restore_records(std::istream& in)
 
 void ParticleOutput::write_xdmf() const
 {
+  if (rank != 0)
+    return;
   write_file_atomically(
       xdmf_path(),
       [&](std::ostream& out)

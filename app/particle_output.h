@@ -4,6 +4,8 @@
 // after each output so that ParaView can open it at any moment. Plain HDF5 C API.
 #pragma once
 
+#include <mpi.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <iosfwd>
@@ -71,8 +73,11 @@ private:
 class ParticleOutput
 {
 public:
-  /// Outputs go to `directory` (must exist) as `<base>_NNNNN.h5` and `<base>.xdmf`.
-  explicit ParticleOutput(const std::string& directory, const std::string& base = "particles");
+  /// Outputs go to `directory` (must exist) as `<base>_NNNNN.h5` and `<base>.xdmf`. With a
+  /// communicator of several ranks, write() is collective: each rank passes its own points
+  /// and all of them land in one file (parallel HDF5); rank 0 writes the XDMF series.
+  explicit ParticleOutput(const std::string& directory, const std::string& base = "particles",
+                          MPI_Comm communicator = MPI_COMM_NULL);
 
   /// Write the snapshot at `time` (s): the HDF5 file, then the XDMF series. Returns the path
   /// of the HDF5 file. Throws std::runtime_error if a file cannot be written.
@@ -107,11 +112,17 @@ private:
 
   std::string directory;
   std::string base;
+  MPI_Comm comm;
+  int rank = 0;
+  int n_ranks = 1;
   std::vector<Record> records;
 };
 
 /// Write one snapshot as an HDF5 file at `path` (not atomic by itself): datasets
 /// `/positions` (n x 3), one dataset per field named after it, and the attribute `time` on
-/// the root group.
-void write_particle_hdf5(const std::string& path, double time, const ParticleSnapshot& snapshot);
+/// the root group. With a communicator of several ranks (collective): every rank's snapshot
+/// goes to rows [first_row, first_row + its size) of datasets of `total_rows` rows.
+void write_particle_hdf5(const std::string& path, double time, const ParticleSnapshot& snapshot,
+                         MPI_Comm communicator = MPI_COMM_NULL, std::size_t first_row = 0,
+                         std::size_t total_rows = 0);
 } // namespace vulnus::app

@@ -14,13 +14,16 @@ std::string default_run_directory(const std::string& deck_path)
   return (std::filesystem::path("runs") / std::filesystem::path(deck_path).stem()).string();
 }
 
-RunDirectory::RunDirectory(const std::string& path) : directory(path)
+RunDirectory::RunDirectory(const std::string& path, const bool writes)
+    : directory(path), writer(writes)
 {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error || !std::filesystem::is_directory(directory))
     throw std::runtime_error("cannot create the run directory '" + directory +
                              "': " + (error ? error.message() : "not a directory"));
+  if (!writer)
+    return;
   log_file.open(file("log.txt"), std::ios::app);
   if (!log_file)
     throw std::runtime_error("cannot open '" + file("log.txt") + "' for writing");
@@ -33,11 +36,15 @@ std::string RunDirectory::file(const std::string& name) const
 
 void RunDirectory::write_deck_used(const std::string& resolved_deck) const
 {
+  if (!writer)
+    return;
   write_file_atomically(file("deck_used.prm"), [&](std::ostream& out) { out << resolved_deck; });
 }
 
 void RunDirectory::log(const std::string& line)
 {
+  if (!writer)
+    return;
   const std::lock_guard<std::mutex> lock(log_mutex);
   std::cout << line << '\n' << std::flush;
   log_file << line << '\n' << std::flush;
@@ -45,6 +52,8 @@ void RunDirectory::log(const std::string& line)
 
 void RunDirectory::warn(const std::string& line)
 {
+  if (!writer)
+    return;
   const std::lock_guard<std::mutex> lock(log_mutex);
   std::cerr << "warning: " << line << '\n' << std::flush;
   log_file << "warning: " << line << '\n' << std::flush;

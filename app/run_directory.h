@@ -16,8 +16,12 @@ class RunDirectory
 {
 public:
   /// Create `path` (and its parents) and open log.txt for appending. Throws
-  /// std::runtime_error naming the directory if it cannot be created.
-  explicit RunDirectory(const std::string& path);
+  /// std::runtime_error naming the directory if it cannot be created. With `writes` false
+  /// (the ranks other than 0 of an MPI run) log, warn and write_deck_used do nothing.
+  explicit RunDirectory(const std::string& path, bool writes = true);
+
+  /// False on the MPI ranks that leave the run's own files to rank 0.
+  bool writes_files() const { return writer; }
 
   const std::string& path() const { return directory; }
 
@@ -38,6 +42,7 @@ public:
 
 private:
   std::string directory;
+  bool writer = true;
   std::ofstream log_file;
   std::mutex log_mutex;
 };

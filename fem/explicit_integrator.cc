@@ -8,6 +8,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <chrono>
+
 namespace vulnus::fem
 {
 using namespace dealii;
@@ -17,7 +19,10 @@ void FarFieldSolver::evaluate_explicit_forces(const double t)
   Data& d = *data;
   d.ghosted = d.displacement;
   d.residual = 0.0;
+  const auto start = std::chrono::steady_clock::now();
   const EvaluationSums sums = d.evaluate_internal_forces(d.ghosted, &d.residual);
+  d.phase_times.internal_forces +=
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   d.assemble_external_forces(t, &d.residual);
   d.commit_states();
   d.last_sums = sums;

@@ -102,6 +102,7 @@ struct FarFieldSolver::Data
   std::vector<double> cell_size;                 ///< smallest vertex distance / degree, m
 
   EvaluationSums last_sums;
+  FePhaseTimes phase_times;
   double time = 0.0;
   unsigned int step = 0;
   double external_work = 0.0;

@@ -13,6 +13,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/vector.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -330,9 +331,23 @@ void FarFieldSolver::advance(const double dt)
 {
   AssertThrow(dt > 0.0 && std::isfinite(dt), ExcMessage("FE advance: time step must be positive"));
   if (data->is_implicit())
+  {
     advance_implicit(dt);
-  else
-    advance_explicit(dt);
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const double forces_before = data->phase_times.internal_forces;
+  advance_explicit(dt);
+  FePhaseTimes& t = data->phase_times;
+  const double step_seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  t.rest += step_seconds - (t.internal_forces - forces_before);
+  ++t.n_steps;
+}
+
+const FePhaseTimes& FarFieldSolver::explicit_phase_times() const
+{
+  return data->phase_times;
 }
 
 double FarFieldSolver::time() const

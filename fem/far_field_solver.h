@@ -50,6 +50,14 @@ struct FeDiagnostics
 };
 
 /// Statistics of the last implicit step.
+/// Wall-clock seconds of the explicit steps since the start, by phase.
+struct FePhaseTimes
+{
+  double internal_forces = 0.0; ///< material update at the quadrature points and assembly
+  double rest = 0.0;            ///< external forces, vector updates, ghost exchange, constraints
+  unsigned long long n_steps = 0;
+};
+
 struct ImplicitStepStatistics
 {
   unsigned int newton_iterations = 0;
@@ -117,6 +125,8 @@ public:
 
   FeDiagnostics diagnostics() const;
   const ImplicitStepStatistics& last_implicit_step() const;
+  /// Explicit steps only (the implicit step reports Newton statistics instead).
+  const FePhaseTimes& explicit_phase_times() const;
   unsigned long long n_failed_points() const;
   unsigned long long n_active_cells() const;
   unsigned long long n_dofs() const;

@@ -119,55 +119,84 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Ve
 }
 } // namespace
 
-void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fields,
-                 GridUpdateResult& result)
+void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fields)
 {
   const std::size_t n_bodies = fields.n_bodies;
   const long n_nodes = static_cast<long>(grid.n_active());
   const double dt = s.time_step;
+#pragma omp parallel for schedule(static)
+  for (long node = 0; node < n_nodes; ++node)
+  {
+    const std::int64_t key = grid.active_keys()[node];
+    const NodeBodyData* data = &fields.data[node * n_bodies];
+    Vector3* v = &fields.velocity[node * n_bodies];
+    Vector3* v_new = &fields.velocity_new[node * n_bodies];
+    std::size_t n_with_mass = 0;
+    for (std::size_t b = 0; b < n_bodies; ++b)
+    {
+      if (data[b].mass <= s.mass_tolerance)
+      {
+        v[b].setZero();
+        v_new[b].setZero();
+        continue;
+      }
+      ++n_with_mass;
+      if (s.body_is_rigid[b])
+      {
+        v[b] = s.rigid_velocity[b];
+        v_new[b] = s.rigid_velocity[b];
+        continue;
+      }
+      v[b] = data[b].momentum / data[b].mass;
+      v_new[b] = v[b] + dt * (data[b].force / data[b].mass + s.gravity);
+    }
+    if (s.contact && n_with_mass > 1)
+      continue; // resolve_contacts applies the face conditions after the correction
+    for (std::size_t b = 0; b < n_bodies; ++b)
+      if (data[b].mass > s.mass_tolerance && !s.body_is_rigid[b])
+        apply_face_conditions(grid, s.faces, key, v_new[b]); // v^n stays: FLIP sees the stop
+  }
+}
+
+void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields& fields,
+                      GridUpdateResult& result)
+{
+  const std::size_t n_bodies = fields.n_bodies;
+  const long n_nodes = static_cast<long>(grid.n_active());
   result.contact_force.assign(n_bodies, Vector3::Zero());
   result.contact_dissipation = 0.0;
   result.n_contact_nodes = 0;
+  if (!s.contact)
+    return;
   double dissipation = 0.0;
   std::size_t n_contact_nodes = 0;
-
+  const std::vector<std::int64_t>& keys = grid.active_keys();
 #pragma omp parallel reduction(+ : dissipation, n_contact_nodes)
   {
     std::vector<Vector3> force_local(n_bodies, Vector3::Zero());
+    std::vector<Vector3> force_elsewhere(n_bodies, Vector3::Zero()); // another rank's node
 #pragma omp for schedule(static)
     for (long node = 0; node < n_nodes; ++node)
     {
-      const std::int64_t key = grid.active_keys()[node];
-      NodeBodyData* data = &fields.data[node * n_bodies];
-      Vector3* v = &fields.velocity[node * n_bodies];
-      Vector3* v_new = &fields.velocity_new[node * n_bodies];
+      const NodeBodyData* data = &fields.data[node * n_bodies];
       std::size_t n_with_mass = 0;
       for (std::size_t b = 0; b < n_bodies; ++b)
-      {
-        if (data[b].mass <= s.mass_tolerance)
-        {
-          v[b].setZero();
-          v_new[b].setZero();
-          continue;
-        }
-        ++n_with_mass;
-        if (s.body_is_rigid[b])
-        {
-          v[b] = s.rigid_velocity[b];
-          v_new[b] = s.rigid_velocity[b];
-          continue;
-        }
-        v[b] = data[b].momentum / data[b].mass;
-        v_new[b] = v[b] + dt * (data[b].force / data[b].mass + s.gravity);
-      }
-      if (s.contact && n_with_mass > 1)
+        n_with_mass += data[b].mass > s.mass_tolerance;
+      if (n_with_mass < 2)
+        continue;
+      Vector3* v_new = &fields.velocity_new[node * n_bodies];
+      // Sums over owned nodes only, so that ranks sharing a node count it once.
+      const bool owned = !s.owns_node || s.owns_node(keys[node]);
+      const double removed = resolve_contact(s, data, v_new, n_bodies,
+                                             owned ? force_local.data() : force_elsewhere.data());
+      if (owned)
       {
         ++n_contact_nodes;
-        dissipation += resolve_contact(s, data, v_new, n_bodies, force_local.data());
+        dissipation += removed;
       }
       for (std::size_t b = 0; b < n_bodies; ++b)
         if (data[b].mass > s.mass_tolerance && !s.body_is_rigid[b])
-          apply_face_conditions(grid, s.faces, key, v_new[b]); // v^n stays: FLIP sees the stop
+          apply_face_conditions(grid, s.faces, keys[node], v_new[b]);
     }
 #pragma omp critical
     for (std::size_t b = 0; b < n_bodies; ++b)

@@ -7,6 +7,7 @@
 #include "mpm/grid_fields.h"
 #include "mpm/scene_parameters.h"
 
+#include <functional>
 #include <vector>
 
 namespace vulnus::mpm
@@ -22,6 +23,8 @@ struct GridUpdateSettings
   std::vector<char> body_is_rigid;     ///< per body
   std::vector<Vector3> rigid_velocity; ///< per body, used when rigid
   double mass_tolerance = 0.0;         ///< node-body entries lighter than this are ignored
+  /// When set (distributed runs), contact sums count only the nodes this rank owns.
+  std::function<bool(std::int64_t)> owns_node;
 };
 
 struct GridUpdateResult
@@ -31,9 +34,14 @@ struct GridUpdateResult
   std::size_t n_contact_nodes = 0;    ///< nodes where two or more bodies met
 };
 
-/// Computes fields.velocity (v^n) and fields.velocity_new (v^(n+1)) of every node and body.
-void update_grid(const Grid& grid, const GridUpdateSettings& settings, GridFields& fields,
-                 GridUpdateResult& result);
+/// Computes fields.velocity (v^n) and fields.velocity_new (v^(n+1)) of every node and body,
+/// with the face conditions, except at nodes where bodies meet when contact is on.
+void update_grid(const Grid& grid, const GridUpdateSettings& settings, GridFields& fields);
+
+/// Corrects v^(n+1) at the nodes where two or more bodies have mass (contact on), then applies
+/// the face conditions there; fills the contact force, dissipation and node count.
+void resolve_contacts(const Grid& grid, const GridUpdateSettings& settings, GridFields& fields,
+                      GridUpdateResult& result);
 
 /// Applies the domain face conditions to a nodal velocity of node `key`.
 void apply_face_conditions(const Grid& grid, const FaceConditions& faces, std::int64_t key,

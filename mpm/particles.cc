@@ -5,19 +5,7 @@ namespace vulnus::mpm
 {
 void Particles::reserve(const std::size_t n)
 {
-  position.reserve(n);
-  reference_position.reserve(n);
-  velocity.reserve(n);
-  deformation_gradient.reserve(n);
-  stress.reserve(n);
-  mass.reserve(n);
-  reference_volume.reserve(n);
-  fiber_direction.reserve(n);
-  state.reserve(n);
-  energy_density.reserve(n);
-  dissipated_density.reserve(n);
-  wave_speed.reserve(n);
-  id.reserve(n);
+  for_each_array([n](auto& values) { values.reserve(n); });
 }
 
 void Particles::append(const Vector3& x, const Vector3& v, const double m, const double volume,
@@ -68,18 +56,6 @@ void Particles::keep_only(const std::vector<char>& keep)
 
 void Particles::permute(const std::vector<std::size_t>& order)
 {
-  apply_order(position, order);
-  apply_order(reference_position, order);
-  apply_order(velocity, order);
-  apply_order(deformation_gradient, order);
-  apply_order(stress, order);
-  apply_order(mass, order);
-  apply_order(reference_volume, order);
-  apply_order(fiber_direction, order);
-  apply_order(state, order);
-  apply_order(energy_density, order);
-  apply_order(dissipated_density, order);
-  apply_order(wave_speed, order);
-  apply_order(id, order);
+  for_each_array([&order](auto& values) { apply_order(values, order); });
 }
 } // namespace vulnus::mpm

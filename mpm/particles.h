@@ -53,5 +53,29 @@ struct Particles
 
   /// Reorders every array by `order` (new index i takes old index order[i]).
   void permute(const std::vector<std::size_t>& order);
+
+  /// Calls f on each per-point array (not body_begin), always in the same order.
+  template <class F>
+  void for_each_array(F&& f)
+  {
+    f(position);
+    f(reference_position);
+    f(velocity);
+    f(deformation_gradient);
+    f(stress);
+    f(mass);
+    f(reference_volume);
+    f(fiber_direction);
+    f(state);
+    f(energy_density);
+    f(dissipated_density);
+    f(wave_speed);
+    f(id);
+  }
+  template <class F>
+  void for_each_array(F&& f) const
+  {
+    const_cast<Particles&>(*this).for_each_array([&f](const auto& values) { f(values); });
+  }
 };
 } // namespace vulnus::mpm

@@ -13,8 +13,8 @@
 
 namespace vulnus::mpm
 {
-Solver::Solver(const SceneParameters& scene)
-  : parameters(scene), grid(scene.domain_min, scene.domain_max, scene.cell_size)
+Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
+  : parameters(scene), ranks(communicator), grid(scene.domain_min, scene.domain_max, scene.cell_size)
 {
   const std::size_t n_bodies = scene.bodies.size();
   if (n_bodies == 0)
@@ -87,13 +87,15 @@ Solver::Solver(const SceneParameters& scene)
           exit_plane = std::max(exit_plane, particles.position[p].dot(flight_axis));
   }
 
+  distribute_points();
+
   // Initial stresses and wave speeds (non-zero when a body starts deformed is not supported:
   // F = I, so this gives the small-strain moduli for the first CFL step).
   volumetric_rate.assign(particles.size(), 0.0);
   stress_settings.time_step = 0.0;
   update_stresses(stress_settings, volumetric_rate, particles, stress_result);
   sort_points();
-  const SceneDiagnostics d = compute_diagnostics(particles, flight_axis, parameters.gravity);
+  const SceneDiagnostics d = diagnostics();
   energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
   check_state();
 }
@@ -126,6 +128,7 @@ double Solver::stable_time_step() const
       body_fastest = std::max(body_fastest, particles.wave_speed[p] + particles.velocity[p].norm());
     fastest = std::max(fastest, body_fastest);
   }
+  fastest = ranks.max(fastest);
   const double limit = fastest > 0.0 ? parameters.cfl * parameters.cell_size / fastest
                                      : parameters.max_time_step;
   return std::min(limit, parameters.max_time_step);
@@ -158,12 +161,16 @@ void Solver::advance(const double cap)
 
   mark_active_nodes(particles, transfer, grid);
   particles_to_grid(particles, grid, transfer, true, buffers, fields);
+  sum_node_data_with_neighbours();
   lap(timings.particle_to_grid);
 
   grid_settings.time_step = dt;
-  update_grid(grid, grid_settings, fields, grid_result);
-  accumulated_contact_dissipation += grid_result.contact_dissipation;
+  update_grid(grid, grid_settings, fields);
   lap(timings.grid_update);
+  resolve_contacts(grid, grid_settings, fields, grid_result);
+  reduce_contact_result();
+  accumulated_contact_dissipation += grid_result.contact_dissipation;
+  lap(timings.contact);
   if (shared.partner)
   {
     exchange_shared_nodes(dt);
@@ -175,6 +182,7 @@ void Solver::advance(const double cap)
   if (parameters.update_scheme == UpdateScheme::musl)
   {
     particles_to_grid(particles, grid, transfer, false, buffers, fields);
+    sum_node_data_with_neighbours();
     velocities_from_momenta(grid, grid_settings, fields);
     if (shared.partner)
       impose_shared_velocities();
@@ -185,8 +193,10 @@ void Solver::advance(const double cap)
 
   stress_settings.time_step = dt;
   update_stresses(stress_settings, volumetric_rate, particles, stress_result);
+  std::vector<double> yield_ratio = stress_result.max_von_mises_over_yield;
+  ranks.max(yield_ratio.data(), static_cast<int>(yield_ratio.size()));
   for (std::size_t b = 0; b < peak_yield_ratio.size(); ++b)
-    peak_yield_ratio[b] = std::max(peak_yield_ratio[b], stress_result.max_von_mises_over_yield[b]);
+    peak_yield_ratio[b] = std::max(peak_yield_ratio[b], yield_ratio[b]);
 
   // Free rigid bodies respond to the contact force (translation only).
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
@@ -201,15 +211,24 @@ void Solver::advance(const double cap)
 
   current_time += dt;
   ++n_steps;
+  std::string material_problem;
   if (stress_result.failed_point >= 0)
-    throw BlowUp("material update failed at step " + std::to_string(n_steps) + ", t = " +
-                 std::to_string(current_time) + " s, " +
-                 describe_point(stress_result.failed_point) + ": " +
-                 stress_result.failure_message);
+    material_problem = "material update failed at step " + std::to_string(n_steps) + ", t = " +
+                       std::to_string(current_time) + " s, " +
+                       describe_point(stress_result.failed_point) + ": " +
+                       stress_result.failure_message;
+  material_problem = ranks.first_message(material_problem);
+  if (!material_problem.empty())
+    throw BlowUp(material_problem);
   if (parameters.remove_points_leaving_grid)
     remove_points_outside_grid();
   check_state();
-  if (parameters.sort_interval > 0 && n_steps % parameters.sort_interval == 0)
+  const bool sort_now = parameters.sort_interval > 0 && n_steps % parameters.sort_interval == 0;
+  if (sort_now)
+    rebalance_slabs();
+  else
+    migrate_points(false);
+  if (sort_now)
     sort_points();
   lap(timings.checks_and_sorting);
 }
@@ -223,14 +242,9 @@ bool Solver::finished() const
     double tail = std::numeric_limits<double>::max();
     for (std::size_t p = particles.begin_of(projectile_body); p < particles.end_of(projectile_body); ++p)
       tail = std::min(tail, particles.position[p].dot(flight_axis));
-    return tail > exit_plane;
+    return ranks.min(tail) > exit_plane;
   }
   return false;
-}
-
-SceneDiagnostics Solver::diagnostics() const
-{
-  return compute_diagnostics(particles, flight_axis, parameters.gravity);
 }
 
 void Solver::sort_points()
@@ -260,6 +274,8 @@ void Solver::remove_points_outside_grid()
   const std::size_t n = particles.size();
   std::vector<char> keep(n, 1);
   std::size_t n_outside = 0;
+  const double energy_before = outflow_energy;
+  const Vector3 momentum_before = outflow_momentum;
   for (std::size_t p = 0; p < n; ++p)
   {
     const Vector3& x = particles.position[p];
@@ -273,10 +289,20 @@ void Solver::remove_points_outside_grid()
                         (particles.energy_density[p] + particles.dissipated_density[p]);
     outflow_momentum += m * particles.velocity[p];
   }
-  if (n_outside == 0)
-    return;
+  if (n_outside > 0)
+    particles.keep_only(keep);
+  if (ranks.distributed()) // the totals are over all ranks
+  {
+    double totals[6] = {double(n_outside), outflow_energy - energy_before, 0, 0, 0, 0};
+    const Vector3 momentum = outflow_momentum - momentum_before;
+    for (int d = 0; d < 3; ++d)
+      totals[2 + d] = momentum[d];
+    ranks.sum(totals, 5);
+    n_outside = static_cast<std::size_t>(totals[0]);
+    outflow_energy = energy_before + totals[1];
+    outflow_momentum = momentum_before + Vector3(totals[2], totals[3], totals[4]);
+  }
   n_removed += n_outside;
-  particles.keep_only(keep);
 }
 
 std::string Solver::describe_point(const std::size_t p) const
@@ -295,6 +321,13 @@ std::string Solver::describe_point(const std::size_t p) const
 
 void Solver::check_state() const
 {
+  const std::string problem = ranks.first_message(state_problem());
+  if (!problem.empty())
+    throw BlowUp(problem);
+}
+
+std::string Solver::state_problem() const
+{
   const long n = static_cast<long>(particles.size());
   long bad = n;
   const Vector3 lower = grid.origin().array() - grid.cell_size();
@@ -311,7 +344,7 @@ void Solver::check_state() const
       bad = std::min(bad, p);
   }
   if (bad == n)
-    return;
+    return {};
   const Vector3& x = particles.position[bad];
   const double J = particles.deformation_gradient[bad].determinant();
   std::string what, cause;
@@ -335,6 +368,8 @@ void Solver::check_state() const
   std::ostringstream s;
   s << what << " at step " << n_steps << ", t = " << current_time << " s, " << describe_point(bad)
     << "; likely cause: " << cause;
-  throw BlowUp(s.str());
+  if (ranks.distributed())
+    s << " (on rank " << ranks.rank() << " of " << ranks.size() << ")";
+  return s.str();
 }
 } // namespace vulnus::mpm

@@ -14,7 +14,9 @@
 #include "mpm/interface_exchange.h"
 #include "mpm/particle_to_grid.h"
 #include "mpm/particles.h"
+#include "mpm/rank_group.h"
 #include "mpm/scene_parameters.h"
+#include "mpm/slab_partition.h"
 #include "mpm/stress_update.h"
 #include "mpm/transfer_settings.h"
 
@@ -41,22 +43,29 @@ struct PhaseTimes
 {
   double time_step = 0.0;
   double particle_to_grid = 0.0;
-  double grid_update = 0.0; ///< includes contact
+  double grid_update = 0.0; ///< nodal velocities, forces, face conditions
+  double contact = 0.0;     ///< the contact pass (nodes where bodies meet)
   double grid_to_particle = 0.0;
   double stress_update = 0.0;
   double checks_and_sorting = 0.0;
   double coupling = 0.0; ///< the partner's exchange, including its own step
   double total() const
   {
-    return time_step + particle_to_grid + grid_update + grid_to_particle + stress_update +
+    return time_step + particle_to_grid + grid_update + contact + grid_to_particle + stress_update +
            checks_and_sorting + coupling;
   }
 };
 
+/// Distributed runs (a communicator of several ranks): each rank holds the points of one slab
+/// of the grid (SlabPartition); the step's results are the same as on one rank up to the
+/// order of floating-point additions. points() is then this rank's share; the diagnostics,
+/// time step, contact results, counters and errors are over all ranks, and every public
+/// call that says "collective" must be made on every rank.
 class Solver
 {
 public:
-  explicit Solver(const SceneParameters& scene);
+  /// `communicator`: MPI_COMM_NULL (or one rank) for a run in one process.
+  explicit Solver(const SceneParameters& scene, MPI_Comm communicator = MPI_COMM_NULL);
 
   /// Replaces the point velocities of the deformable bodies (or of body `body` only) by
   /// field(x) (initial conditions such as a vibration mode); resets the initial energy.
@@ -75,16 +84,27 @@ public:
   const SharedNodes& shared_nodes() const { return shared; }
 
   /// True when the end time is reached or the projectile's tail has left the targets.
+  /// Collective.
   bool finished() const;
 
   double time() const { return current_time; }
   std::size_t step_count() const { return n_steps; }
   double last_time_step() const { return time_step; }
+  /// This rank's points.
   const Particles& points() const { return particles; }
+  /// Every rank's points on rank 0 (an empty container elsewhere). Collective.
+  Particles gather_points() const;
+  /// Number of points over all ranks. Collective.
+  std::size_t n_points_all_ranks() const;
+  /// Active grid nodes summed over the ranks (nodes shared by two slabs count twice). Collective.
+  std::size_t active_nodes_all_ranks() const;
+  const RankGroup& rank_group() const { return ranks; }
+  const SlabPartition& slabs() const { return partition; }
   const Grid& background_grid() const { return grid; }
   const SceneParameters& scene() const { return parameters; }
   const materials::Material& body_material(std::size_t b) const { return *materials_of_body[b]; }
 
+  /// Collective.
   SceneDiagnostics diagnostics() const;
 
   /// Writes the whole evolving state (points, time, step, rigid velocities, accumulated
@@ -120,10 +140,19 @@ private:
   void exchange_shared_nodes(double dt);
   void impose_shared_velocities();
   void check_state() const;
+  std::string state_problem() const;
+  void distribute_points();
+  void rebalance_slabs();
+  void migrate_points(bool to_any_rank);
+  void sum_node_data_with_neighbours();
+  void reduce_contact_result();
   void remove_points_outside_grid();
   std::string describe_point(std::size_t p) const;
 
   SceneParameters parameters;
+  RankGroup ranks;
+  SlabPartition partition;
+  std::vector<char> node_shared_with_lower_rank; ///< per active node, set by the node exchange
   std::vector<std::unique_ptr<materials::Material>> owned_materials;
   std::vector<const materials::Material*> materials_of_body;
   Grid grid;

@@ -13,7 +13,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '1'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '2'};
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -21,19 +21,7 @@ void Solver::save(std::ostream& out) const
   out.write(magic, sizeof(magic));
   put(out, static_cast<std::uint64_t>(parameters.bodies.size()));
   put_vector(out, particles.body_begin);
-  put_vector(out, particles.position);
-  put_vector(out, particles.reference_position);
-  put_vector(out, particles.velocity);
-  put_vector(out, particles.deformation_gradient);
-  put_vector(out, particles.stress);
-  put_vector(out, particles.mass);
-  put_vector(out, particles.reference_volume);
-  put_vector(out, particles.fiber_direction);
-  put_vector(out, particles.state);
-  put_vector(out, particles.energy_density);
-  put_vector(out, particles.dissipated_density);
-  put_vector(out, particles.wave_speed);
-  put_vector(out, particles.id);
+  particles.for_each_array([&out](const auto& values) { put_vector(out, values); });
   put_vector(out, grid_settings.rigid_velocity);
   put_vector(out, peak_yield_ratio);
   put(out, current_time);
@@ -44,6 +32,9 @@ void Solver::save(std::ostream& out) const
   put(out, static_cast<std::uint64_t>(n_removed));
   put(out, outflow_energy);
   put(out, outflow_momentum);
+  put(out, static_cast<std::uint64_t>(ranks.size()));
+  put(out, static_cast<std::int32_t>(partition.axis()));
+  put_vector(out, partition.first_layers());
   out.write(magic, sizeof(magic)); // trailer: a complete checkpoint ends with the tag
   if (!out)
     throw std::runtime_error("checkpoint could not be written");
@@ -59,19 +50,7 @@ void Solver::restore(std::istream& in)
                              std::to_string(parameters.bodies.size()) + ": it belongs to another scene");
   Particles loaded;
   get_vector(in, loaded.body_begin);
-  get_vector(in, loaded.position);
-  get_vector(in, loaded.reference_position);
-  get_vector(in, loaded.velocity);
-  get_vector(in, loaded.deformation_gradient);
-  get_vector(in, loaded.stress);
-  get_vector(in, loaded.mass);
-  get_vector(in, loaded.reference_volume);
-  get_vector(in, loaded.fiber_direction);
-  get_vector(in, loaded.state);
-  get_vector(in, loaded.energy_density);
-  get_vector(in, loaded.dissipated_density);
-  get_vector(in, loaded.wave_speed);
-  get_vector(in, loaded.id);
+  loaded.for_each_array([&in](auto& values) { get_vector(in, values); });
   std::vector<Vector3> rigid_velocity;
   std::vector<double> peak;
   get_vector(in, rigid_velocity);
@@ -87,6 +66,12 @@ void Solver::restore(std::istream& in)
   get(in, removed);
   get(in, outflow);
   get(in, outflow_p);
+  std::uint64_t n_ranks = 0;
+  std::int32_t slab_axis = 0;
+  std::vector<int> first_layers;
+  get(in, n_ranks);
+  get(in, slab_axis);
+  get_vector(in, first_layers);
   expect_tag(in, magic, "checkpoint is incomplete (no trailer)");
   const std::size_t n = loaded.position.size();
   if (loaded.body_begin.size() != n_bodies + 1 || loaded.body_begin.back() != n ||
@@ -94,6 +79,20 @@ void Solver::restore(std::istream& in)
       peak.size() != n_bodies)
     throw std::runtime_error("checkpoint is inconsistent (array sizes differ)");
 
+  if (n_ranks != static_cast<std::uint64_t>(ranks.size()))
+    throw std::runtime_error("checkpoint was written by " + std::to_string(n_ranks) +
+                             " MPI rank(s); restart it on the same number (this run has " +
+                             std::to_string(ranks.size()) + ")");
+  SlabPartition slabs;
+  try
+  {
+    slabs = SlabPartition::from_layers(slab_axis, first_layers);
+  }
+  catch (const std::invalid_argument&)
+  {
+    throw std::runtime_error("checkpoint is inconsistent (slab cuts)");
+  }
+  partition = slabs;
   particles = std::move(loaded);
   grid_settings.rigid_velocity = rigid_velocity;
   kinematics.rigid_velocity = rigid_velocity;

@@ -75,8 +75,15 @@ int main(int argc, char** argv)
                   << ", linear iterations/Newton iteration "
                   << double(linear) / std::max(newton, 1u) << "\n";
       else
+      {
+        const FePhaseTimes& t = solver.explicit_phase_times();
+        const double point_steps = solver.n_quadrature_points() * double(t.n_steps);
         std::cout << "  " << solver.n_quadrature_points() * double(n_steps) / run
-                  << " quadrature-point updates per second (whole step)\n";
+                  << " quadrature-point updates per second (whole step); per phase: internal "
+                     "forces (material update + assembly) "
+                  << 1e9 * t.internal_forces / point_steps << " ns/point-step, the rest "
+                  << 1e9 * t.rest / point_steps << " ns/point-step\n";
+      }
     }
   }
   return 0;

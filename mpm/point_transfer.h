@@ -1,0 +1,23 @@
+// Moving material points between containers (no MPI here): picking points out by a per-point
+// destination, flattening a container to bytes and back, and appending one container's
+// bodies to another's. Distributed runs send the bytes between ranks.
+#pragma once
+
+#include "mpm/particles.h"
+
+#include <vector>
+
+namespace vulnus::mpm
+{
+/// The points whose destination equals d, for each d in [0, n_destinations), body ranges kept.
+std::vector<Particles> split_by_destination(const Particles& points, const std::vector<int>& destination,
+                                            int n_destinations);
+
+/// All arrays and the body ranges as bytes; from_bytes reverses it and throws
+/// std::runtime_error on a size mismatch.
+std::vector<char> to_bytes(const Particles& points);
+Particles from_bytes(const char* data, std::size_t size);
+
+/// Appends the points of `more` body by body (both must have the same number of bodies).
+void append_points(Particles& points, const Particles& more);
+} // namespace vulnus::mpm

@@ -1,0 +1,257 @@
+// The solver's side of a distributed run (several MPI ranks, one slab of the grid each):
+// handing points to the rank owning their slab, summing node data with the neighbouring
+// slabs after each particle-to-grid pass, moving the cuts with the points, and the
+// reductions of diagnostics, contact results and errors over all ranks.
+#include "mpm/solver.h"
+
+#include "mpm/point_transfer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace vulnus::mpm
+{
+namespace
+{
+/// Points per cell layer along each axis (layers outside the grid count to the end layers).
+std::vector<std::vector<std::uint64_t>> layer_histograms(const Particles& particles,
+                                                         const Grid& grid)
+{
+  std::vector<std::vector<std::uint64_t>> counts(3);
+  for (int a = 0; a < 3; ++a)
+    counts[a].assign(grid.cells()[a], 0);
+  for (const Vector3& x : particles.position)
+  {
+    const Vector3 s = grid.to_cell_units(x);
+    for (int a = 0; a < 3; ++a)
+    {
+      const double layer = std::clamp(std::floor(s[a]), 0.0, double(grid.cells()[a] - 1));
+      if (std::isfinite(layer))
+        ++counts[a][static_cast<std::size_t>(layer)];
+    }
+  }
+  return counts;
+}
+} // namespace
+
+void Solver::distribute_points()
+{
+  partition = SlabPartition(0);
+  if (!ranks.distributed())
+    return;
+  // Every rank built every point, so the histograms agree without communication.
+  const auto counts = layer_histograms(particles, grid);
+  const int axis = choose_slab_axis(counts);
+  partition = SlabPartition::balanced(axis, counts[axis], ranks.size());
+  // Contact sums count a node shared by two slabs once: on the lower of the two ranks.
+  grid_settings.owns_node = [this](const std::int64_t key)
+  { return !node_shared_with_lower_rank[grid.slot(key)]; };
+  std::vector<char> mine(particles.size());
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    mine[p] = partition.rank_of_position(grid, particles.position[p]) == ranks.rank();
+  particles.keep_only(mine);
+}
+
+void Solver::rebalance_slabs()
+{
+  if (!ranks.distributed())
+    return;
+  std::vector<std::uint64_t> counts = layer_histograms(particles, grid)[partition.axis()];
+  ranks.sum(counts.data(), static_cast<int>(counts.size()));
+  partition = SlabPartition::balanced(partition.axis(), counts, ranks.size());
+  migrate_points(true);
+}
+
+void Solver::migrate_points(const bool to_any_rank)
+{
+  if (!ranks.distributed())
+    return;
+  const int me = ranks.rank();
+  std::vector<int> destination(particles.size());
+  std::size_t n_leaving = 0;
+  for (std::size_t p = 0; p < particles.size(); ++p)
+  {
+    destination[p] = partition.rank_of_position(grid, particles.position[p]);
+    n_leaving += destination[p] != me;
+  }
+  // A step moves a point by less than a cell (CFL < 1) and slabs are several cells thick,
+  // so between rebalancing only the neighbours receive points.
+  std::vector<int> partners;
+  if (to_any_rank)
+    for (int r = 0; r < ranks.size(); ++r)
+      partners.push_back(r);
+  else
+    for (const int r : {me - 1, me + 1})
+      if (r >= 0 && r < ranks.size())
+        partners.push_back(r);
+  std::string problem;
+  for (std::size_t p = 0; p < particles.size() && !to_any_rank; ++p)
+    if (std::abs(destination[p] - me) > 1)
+    {
+      problem = "point moved across a whole slab in one step at step " + std::to_string(n_steps) +
+                ", " + describe_point(p) +
+                "; likely cause: an unstable step (lower Time/CFL) or a bullet speed far beyond "
+                "the time step's wave speed";
+      break;
+    }
+  problem = ranks.first_message(problem);
+  if (!problem.empty())
+    throw BlowUp(problem);
+
+  std::vector<Particles> parts;
+  if (n_leaving > 0)
+    parts = split_by_destination(particles, destination, ranks.size());
+  std::vector<std::vector<char>> outgoing(partners.size());
+  for (std::size_t i = 0; i < partners.size(); ++i)
+    if (n_leaving > 0 && partners[i] != me)
+      outgoing[i] = to_bytes(parts[partners[i]]);
+  const std::vector<std::vector<char>> incoming =
+    to_any_rank ? ranks.exchange_with_all(outgoing) : ranks.exchange_with(partners, outgoing);
+  if (n_leaving > 0)
+    particles = std::move(parts[me]);
+  for (std::size_t i = 0; i < partners.size(); ++i)
+    if (partners[i] != me && !incoming[i].empty())
+      append_points(particles, from_bytes(incoming[i].data(), incoming[i].size()));
+  volumetric_rate.resize(particles.size(), 0.0);
+}
+
+void Solver::sum_node_data_with_neighbours()
+{
+  if (!ranks.distributed())
+    return;
+  const int me = ranks.rank();
+  const int axis = partition.axis();
+  const bool linear = transfer.shape == ShapeFunction::linear;
+  const int below = linear ? 0 : 1, above = linear ? 1 : 2;
+  const std::size_t n_bodies = fields.n_bodies;
+  const std::size_t record = sizeof(std::int64_t) + n_bodies * sizeof(NodeBodyData);
+  std::vector<int> partners;
+  for (const int r : {me - 1, me + 1})
+    if (r >= 0 && r < ranks.size())
+      partners.push_back(r);
+  std::vector<std::vector<char>> outgoing(partners.size());
+  for (std::size_t i = 0; i < partners.size(); ++i)
+  {
+    const auto [lowest, highest] = partition.touched_node_layers(partners[i], below, above);
+    for (std::size_t s = 0; s < grid.n_active(); ++s)
+    {
+      const std::int64_t key = grid.active_keys()[s];
+      const int layer = grid.node_ijk(key)[axis];
+      if (layer < lowest || layer > highest)
+        continue;
+      std::vector<char>& out = outgoing[i];
+      const std::size_t offset = out.size();
+      out.resize(offset + record);
+      std::memcpy(out.data() + offset, &key, sizeof(key));
+      std::memcpy(out.data() + offset + sizeof(key), &fields.data[s * n_bodies],
+                  n_bodies * sizeof(NodeBodyData));
+    }
+  }
+  const std::vector<std::vector<char>> incoming = ranks.exchange_with(partners, outgoing);
+  node_shared_with_lower_rank.assign(grid.n_active(), 0);
+  for (std::size_t i = 0; i < partners.size(); ++i)
+    for (std::size_t offset = 0; offset + record <= incoming[i].size(); offset += record)
+    {
+      const std::vector<char>& message = incoming[i];
+      std::int64_t key = 0;
+      std::memcpy(&key, message.data() + offset, sizeof(key));
+      const std::int32_t slot = grid.slot(key);
+      if (slot < 0)
+        continue; // no point of this rank touches it
+      if (partners[i] < me)
+        node_shared_with_lower_rank[slot] = 1;
+      for (std::size_t b = 0; b < n_bodies; ++b)
+      {
+        NodeBodyData other;
+        std::memcpy(static_cast<void*>(&other), message.data() + offset + sizeof(key) + b * sizeof(NodeBodyData),
+                    sizeof(NodeBodyData));
+        fields.data[slot * n_bodies + b].add(other);
+      }
+    }
+}
+
+void Solver::reduce_contact_result()
+{
+  if (!ranks.distributed())
+    return;
+  const std::size_t n_bodies = grid_result.contact_force.size();
+  std::vector<double> sums;
+  for (const Vector3& f : grid_result.contact_force)
+    sums.insert(sums.end(), {f[0], f[1], f[2]});
+  sums.push_back(grid_result.contact_dissipation);
+  sums.push_back(double(grid_result.n_contact_nodes));
+  ranks.sum(sums.data(), static_cast<int>(sums.size()));
+  for (std::size_t b = 0; b < n_bodies; ++b)
+    grid_result.contact_force[b] = Vector3(sums[3 * b], sums[3 * b + 1], sums[3 * b + 2]);
+  grid_result.contact_dissipation = sums[3 * n_bodies];
+  grid_result.n_contact_nodes = static_cast<std::size_t>(sums[3 * n_bodies + 1]);
+}
+
+SceneDiagnostics Solver::diagnostics() const
+{
+  SceneDiagnostics d = compute_diagnostics(particles, flight_axis, parameters.gravity);
+  if (!ranks.distributed())
+    return d;
+  // Sums: energies and momentum, then per body mass, first moments, momentum and energies.
+  std::vector<double> sums = {d.kinetic_energy, d.strain_energy, d.potential_energy,
+                              d.dissipated_energy, d.momentum[0], d.momentum[1], d.momentum[2]};
+  std::vector<double> extremes;
+  for (const BodySummary& b : d.bodies)
+  {
+    const Vector3 moment = b.mass * b.centroid, momentum = b.mass * b.velocity;
+    sums.insert(sums.end(), {b.mass, moment[0], moment[1], moment[2], momentum[0], momentum[1],
+                             momentum[2], b.kinetic_energy, b.strain_energy, b.dissipated_energy});
+    extremes.insert(extremes.end(), {-b.min_along, b.max_along});
+  }
+  ranks.sum(sums.data(), static_cast<int>(sums.size()));
+  ranks.max(extremes.data(), static_cast<int>(extremes.size()));
+  std::uint64_t counts[4];
+  for (int k = 0; k < 4; ++k)
+    counts[k] = d.failure_counts[k];
+  ranks.sum(counts, 4);
+  d.kinetic_energy = sums[0];
+  d.strain_energy = sums[1];
+  d.potential_energy = sums[2];
+  d.dissipated_energy = sums[3];
+  d.momentum = Vector3(sums[4], sums[5], sums[6]);
+  for (int k = 0; k < 4; ++k)
+    d.failure_counts[k] = counts[k];
+  for (std::size_t i = 0; i < d.bodies.size(); ++i)
+  {
+    const double* s = &sums[7 + 10 * i];
+    BodySummary& b = d.bodies[i];
+    b.mass = s[0];
+    b.centroid = b.mass > 0 ? Vector3(Vector3(s[1], s[2], s[3]) / b.mass) : Vector3(Vector3::Zero());
+    b.velocity = b.mass > 0 ? Vector3(Vector3(s[4], s[5], s[6]) / b.mass) : Vector3(Vector3::Zero());
+    b.kinetic_energy = s[7];
+    b.strain_energy = s[8];
+    b.dissipated_energy = s[9];
+    b.min_along = -extremes[2 * i];
+    b.max_along = extremes[2 * i + 1];
+  }
+  return d;
+}
+
+Particles Solver::gather_points() const
+{
+  if (!ranks.distributed())
+    return particles;
+  const std::vector<std::vector<char>> parts = ranks.gather_to_root(to_bytes(particles));
+  Particles all;
+  all.body_begin.assign(particles.n_bodies() + 1, 0);
+  for (const std::vector<char>& part : parts)
+    append_points(all, from_bytes(part.data(), part.size()));
+  return all;
+}
+
+std::size_t Solver::n_points_all_ranks() const
+{
+  return ranks.sum(static_cast<std::uint64_t>(particles.size()));
+}
+
+std::size_t Solver::active_nodes_all_ranks() const
+{
+  return ranks.sum(static_cast<std::uint64_t>(grid.n_active()));
+}
+} // namespace vulnus::mpm

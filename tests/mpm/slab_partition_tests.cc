@@ -1,0 +1,129 @@
+// Slab decomposition and point transfer without MPI: balanced cuts, ownership of layers,
+// and containers surviving a split, a trip through bytes and a merge unchanged.
+#include "mpm/point_transfer.h"
+#include "mpm/slab_partition.h"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+using namespace vulnus;
+using mpm::SlabPartition;
+using mpm::Vector3;
+
+TEST(SlabPartition, CutsBalanceThePointCount)
+{
+  // 40 layers, all points in layers 10..29 (20 each): 2 ranks cut at 20, 4 ranks every 5.
+  std::vector<std::uint64_t> counts(40, 0);
+  for (int l = 10; l < 30; ++l)
+    counts[l] = 20;
+  const SlabPartition two = SlabPartition::balanced(1, counts, 2);
+  EXPECT_EQ(two.axis(), 1);
+  EXPECT_EQ(two.first_layers()[1], 20);
+  const SlabPartition four = SlabPartition::balanced(1, counts, 4);
+  EXPECT_EQ(four.first_layers()[1], 15);
+  EXPECT_EQ(four.first_layers()[2], 20);
+  EXPECT_EQ(four.first_layers()[3], 25);
+  // Ownership: each layer to one rank, the open ends to the end ranks.
+  EXPECT_EQ(four.rank_of_layer(-100), 0);
+  EXPECT_EQ(four.rank_of_layer(14), 0);
+  EXPECT_EQ(four.rank_of_layer(15), 1);
+  EXPECT_EQ(four.rank_of_layer(24), 2);
+  EXPECT_EQ(four.rank_of_layer(25), 3);
+  EXPECT_EQ(four.rank_of_layer(1000), 3);
+}
+
+TEST(SlabPartition, SlabsKeepTheMinimumThickness)
+{
+  // Every point in one layer: the cuts still leave min_layers_per_rank layers to each rank.
+  std::vector<std::uint64_t> counts(16, 0);
+  counts[7] = 1000;
+  const SlabPartition p = SlabPartition::balanced(0, counts, 4);
+  const auto& cuts = p.first_layers();
+  for (int r = 1; r < 4; ++r)
+    EXPECT_EQ(cuts[r], 4 * r);
+  // A stencil reaching one layer down and two up touches only the neighbours' nodes.
+  const auto [lo, hi] = p.touched_node_layers(1, 1, 2);
+  EXPECT_EQ(lo, 3);
+  EXPECT_EQ(hi, 9);
+  EXPECT_GT(lo, p.touched_node_layers(0, 1, 2).first);
+  EXPECT_LT(p.touched_node_layers(0, 1, 2).second, p.touched_node_layers(2, 1, 2).first);
+}
+
+TEST(SlabPartition, TooManyRanksForTheGridIsRefused)
+{
+  const std::vector<std::uint64_t> counts(10, 5);
+  try
+  {
+    SlabPartition::balanced(2, counts, 3);
+    FAIL() << "expected an error";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("10 cell layers along axis 2"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SlabPartition, AxisWithTheMostOccupiedLayers)
+{
+  const std::vector<std::vector<std::uint64_t>> counts = {{0, 1, 1, 0}, {1, 1, 1, 1}, {1, 1, 1, 0}};
+  EXPECT_EQ(mpm::choose_slab_axis(counts), 1);
+}
+
+namespace
+{
+mpm::Particles two_bodies()
+{
+  mpm::Particles p;
+  for (int b = 0; b < 2; ++b)
+  {
+    p.start_body();
+    for (int i = 0; i < 5 + 3 * b; ++i)
+      p.append(Vector3(i, b, 0.5 * i), Vector3(-i, 2.0 * b, 1), 1.0 + i, 0.1 * (b + 1), Vector3::UnitX());
+    p.finish_body();
+  }
+  for (std::size_t i = 0; i < p.size(); ++i)
+  {
+    p.state[i].failure = static_cast<std::uint8_t>(i % 4);
+    p.deformation_gradient[i](0, 1) = 0.01 * i;
+    p.energy_density[i] = 3.0 * i;
+  }
+  return p;
+}
+} // namespace
+
+TEST(PointTransfer, SplitBytesAndMergeKeepEveryPoint)
+{
+  const mpm::Particles points = two_bodies();
+  std::vector<int> destination(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    destination[i] = static_cast<int>(i % 3);
+  const std::vector<mpm::Particles> parts = mpm::split_by_destination(points, destination, 3);
+  mpm::Particles merged;
+  merged.body_begin.assign(3, 0);
+  for (const mpm::Particles& part : parts)
+  {
+    const std::vector<char> bytes = mpm::to_bytes(part);
+    mpm::append_points(merged, mpm::from_bytes(bytes.data(), bytes.size()));
+  }
+  ASSERT_EQ(merged.size(), points.size());
+  EXPECT_EQ(merged.end_of(0), points.end_of(0)); // body ranges survive
+  for (std::size_t i = 0; i < merged.size(); ++i)
+  {
+    const std::uint32_t id = merged.id[i];
+    const std::size_t original = id;
+    EXPECT_EQ(merged.position[i], points.position[original]);
+    EXPECT_EQ(merged.velocity[i], points.velocity[original]);
+    EXPECT_EQ(merged.deformation_gradient[i], points.deformation_gradient[original]);
+    EXPECT_EQ(merged.state[i].failure, points.state[original].failure);
+    EXPECT_EQ(merged.energy_density[i], points.energy_density[original]);
+    EXPECT_EQ(merged.mass[i], points.mass[original]);
+    EXPECT_EQ(i < merged.end_of(0), original < points.end_of(0));
+  }
+}
+
+TEST(PointTransfer, ATruncatedMessageIsRefused)
+{
+  const std::vector<char> bytes = mpm::to_bytes(two_bodies());
+  EXPECT_THROW(mpm::from_bytes(bytes.data(), bytes.size() - 8), std::runtime_error);
+}

@@ -1,0 +1,107 @@
+// The coarse paper scene (rigid bullet, first 60 microseconds) run by `mpirun -np N vulnus
+// run` on 1, 2 and 3 ranks: the same wound and bullet figures as one process, one particle
+// file per output time holding every point, one XDMF series, and a clear refusal when the
+// grid is too thin for the rank count.
+#include "../app/command_runner.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+
+namespace
+{
+using namespace vulnus::testing;
+namespace fs = std::filesystem;
+
+std::string mpirun()
+{
+  return environment_or("VULNUS_MPIEXEC", VULNUS_MPIEXEC);
+}
+
+CommandResult run_on_ranks(const int n_ranks, const std::string& arguments, const fs::path& scratch)
+{
+  const fs::path out = scratch / ".stdout", err = scratch / ".stderr";
+  const std::string command =
+    "cd '" + scratch.string() + "' && OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE '" + mpirun() +
+    "' --allow-run-as-root --oversubscribe -np " + std::to_string(n_ranks) + " '" +
+    vulnus_binary() + "' " + arguments + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  CommandResult result;
+  result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = read_text(out);
+  result.err = read_text(err);
+  return result;
+}
+
+const std::string coarse_scene = "run '" + source_dir() +
+                                 "/inputs/paper/anisotropic_150ms_coarse.prm' --set "
+                                 "'Material bullet/Model=rigid' --set 'Time/End time=6e-5' "
+                                 "--set 'Output/Particle output interval=3e-5'";
+
+/// Point counts of the XDMF series' grids.
+std::vector<long> xdmf_point_counts(const fs::path& xdmf)
+{
+  const std::string text = read_text(xdmf);
+  const std::regex element("NumberOfElements=\"([0-9]+)\"");
+  std::vector<long> counts;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), element);
+       it != std::sregex_iterator(); ++it)
+    counts.push_back(std::stol((*it)[1]));
+  return counts;
+}
+} // namespace
+
+TEST(DistributedPaperScene, OneTwoAndThreeRanksGiveTheSameWound)
+{
+  ScratchDirectory scratch("distributed_paper");
+  std::vector<nlohmann::json> summaries;
+  for (const int n_ranks : {1, 2, 3})
+  {
+    const std::string name = "np" + std::to_string(n_ranks);
+    const CommandResult r = run_on_ranks(n_ranks, coarse_scene + " --output " + name, scratch.path);
+    ASSERT_EQ(r.exit_status, 0) << r.out << r.err;
+    if (n_ranks > 1)
+    {
+      EXPECT_NE(r.out.find("on " + std::to_string(n_ranks) + " MPI ranks"), std::string::npos) << r.out;
+    }
+    summaries.push_back(nlohmann::json::parse(read_text(scratch.path / name / "summary.json")));
+    // t = 0, 3e-5, 6e-5 and the final state: one file each, each with every point.
+    const std::vector<long> counts = xdmf_point_counts(scratch.path / name / "particles.xdmf");
+    ASSERT_EQ(counts.size(), 4u);
+    for (const long n : counts)
+      EXPECT_EQ(n, summaries.back()["particles"].get<long>());
+    EXPECT_TRUE(fs::exists(scratch.path / name / "particles_00003.h5"));
+  }
+  const nlohmann::json& one = summaries[0];
+  for (std::size_t k = 1; k < summaries.size(); ++k)
+  {
+    const nlohmann::json& many = summaries[k];
+    EXPECT_EQ(many["steps"], one["steps"]);
+    // Ranks change only the order of additions at nodes shared by two slabs: round-off,
+    // which can tip a point sitting on a failure threshold. Bound: 0.5 % of the failed
+    // count (a few dozen of ~5000 points), and 1e-6 of the bullet's velocity.
+    for (const char* kind : {"matrix", "total"})
+    {
+      const double a = one["failed"][kind].get<double>(), b = many["failed"][kind].get<double>();
+      EXPECT_LE(std::abs(a - b), 0.005 * std::max(a, 1.0)) << kind << " on " << k + 1 << " ranks";
+    }
+    const double v1 = one["bullet"]["exit_velocity_m_s"].get<double>();
+    const double vn = many["bullet"]["exit_velocity_m_s"].get<double>();
+    EXPECT_NEAR(vn, v1, 1e-6 * std::abs(v1));
+    const double e1 = one["energy"]["balance_error"].get<double>();
+    EXPECT_NEAR(many["energy"]["balance_error"].get<double>(), e1, 1e-4);
+  }
+}
+
+TEST(DistributedPaperScene, TooManyRanksForTheGridIsRefused)
+{
+  ScratchDirectory scratch("distributed_thin");
+  // 5 mm cells: at most 11 cell layers along any axis, fewer than 4 per rank on 3 ranks.
+  const CommandResult r =
+    run_on_ranks(3, coarse_scene + " --set 'Grid/Cell size=0.005' --output thin", scratch.path);
+  EXPECT_NE(r.exit_status, 0);
+  EXPECT_NE((r.out + r.err).find("per rank"), std::string::npos) << r.out << r.err;
+}
