@@ -8,6 +8,8 @@
 #include "materials/material_registry.h"
 #include "mpm/body_builder.h"
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -117,10 +119,9 @@ void check_rank_count(const mpm::SceneParameters& scene, Checker& check)
   const int n_ranks = launcher_size();
   if (n_ranks <= 1 || !(scene.cell_size > 0.0))
     return;
-  long widest = 0;
-  for (unsigned int d = 0; d < 3; ++d)
-    widest = std::max(widest, static_cast<long>(std::ceil(
-                                (scene.domain_max[d] - scene.domain_min[d]) / scene.cell_size - 1e-9)));
+  const std::array<int, 3> cells =
+    mpm::Grid::cell_counts(scene.domain_min, scene.domain_max, scene.cell_size);
+  const long widest = *std::max_element(cells.begin(), cells.end());
   const long needed = long(n_ranks) * mpm::SlabPartition::min_layers_per_rank;
   check.require(widest >= needed, "Grid/Cell size",
                 "the grid has at most " + std::to_string(widest) +

@@ -18,14 +18,24 @@ Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double 
     if (!(extent > 0.0))
       throw std::invalid_argument("Grid/Domain: maximum must exceed minimum along axis " +
                                   std::to_string(d));
-    n_cells[d] = static_cast<int>(std::ceil(extent * inverse_h - 1e-9));
-    n_nodes_box[d] = n_cells[d] + 1 + 2 * padding;
   }
+  n_cells = cell_counts(domain_min_, domain_max_, cell_size);
+  for (int d = 0; d < 3; ++d)
+    n_nodes_box[d] = n_cells[d] + 1 + 2 * padding;
   domain_max = domain_min + h * Vector3(n_cells[0], n_cells[1], n_cells[2]);
   const std::int64_t n_box = n_nodes_box[0] * n_nodes_box[1] * n_nodes_box[2];
   if (n_box > std::int64_t(1) << 31)
     throw std::invalid_argument("Grid: more than 2^31 nodes in the grid box; use larger cells");
   slot_of_key.assign(static_cast<std::size_t>(n_box), -1);
+}
+
+std::array<int, 3> Grid::cell_counts(const Vector3& domain_min, const Vector3& domain_max,
+                                     const double cell_size)
+{
+  std::array<int, 3> n{{0, 0, 0}};
+  for (int d = 0; d < 3; ++d)
+    n[d] = static_cast<int>(std::ceil((domain_max[d] - domain_min[d]) * (1.0 / cell_size) - 1e-9));
+  return n;
 }
 
 std::array<int, 3> Grid::node_ijk(const std::int64_t key) const

@@ -22,6 +22,11 @@ public:
   Grid() = default;
   Grid(const Vector3& domain_min, const Vector3& domain_max, double cell_size);
 
+  /// Cells along each axis of the grid over [domain_min, domain_max] (the box is rounded up
+  /// to whole cells), without building it.
+  static std::array<int, 3> cell_counts(const Vector3& domain_min, const Vector3& domain_max,
+                                        double cell_size);
+
   double cell_size() const { return h; }
   double inverse_cell_size() const { return inverse_h; }
   const Vector3& origin() const { return domain_min; }

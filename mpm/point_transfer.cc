@@ -1,4 +1,4 @@
-// Splitting, flattening and appending point containers.
+// Splitting, flattening and merging point containers.
 #include "mpm/point_transfer.h"
 
 #include <cstdint>
@@ -11,13 +11,6 @@ namespace vulnus::mpm
 {
 namespace
 {
-Particles empty_like(const Particles& points)
-{
-  Particles result;
-  result.body_begin.assign(points.n_bodies() + 1, 0);
-  return result;
-}
-
 template <class T>
 void append_bytes(std::vector<char>& bytes, const T* values, const std::size_t n)
 {
@@ -27,19 +20,35 @@ void append_bytes(std::vector<char>& bytes, const T* values, const std::size_t n
     std::memcpy(bytes.data() + offset, values, sizeof(T) * n);
 }
 
-/// Calls f(a's array, b's matching array) for each per-point array.
-template <class F>
-void for_each_array_pair(Particles& a, const Particles& b, F&& f)
+/// A point of one of several source containers.
+struct PointPick
 {
-  std::vector<const void*> arrays_of_b;
-  b.for_each_array([&arrays_of_b](const auto& values) { arrays_of_b.push_back(&values); });
+  std::size_t source;
+  std::size_t index;
+};
+
+/// The picked points, in pick order, as one container with the given body ranges: one pass
+/// over each array.
+Particles gather(const std::vector<const Particles*>& sources, const std::vector<PointPick>& picks,
+                 std::vector<std::size_t> body_begin)
+{
+  // The arrays of every source, by their position in the visiting order.
+  std::vector<std::vector<const void*>> arrays(sources.size());
+  for (std::size_t i = 0; i < sources.size(); ++i)
+    sources[i]->for_each_array([&](const auto& values) { arrays[i].push_back(&values); });
+  Particles result;
   std::size_t k = 0;
-  a.for_each_array(
+  result.for_each_array(
     [&](auto& values)
     {
       using Values = std::decay_t<decltype(values)>;
-      f(values, *static_cast<const Values*>(arrays_of_b[k++]));
+      values.resize(picks.size());
+      for (std::size_t i = 0; i < picks.size(); ++i)
+        values[i] = (*static_cast<const Values*>(arrays[picks[i].source][k]))[picks[i].index];
+      ++k;
     });
+  result.body_begin = std::move(body_begin);
+  return result;
 }
 
 class ByteReader
@@ -69,29 +78,19 @@ std::vector<Particles> split_by_destination(const Particles& points,
                                             const std::vector<int>& destination,
                                             const int n_destinations)
 {
-  std::vector<std::vector<std::size_t>> chosen(n_destinations);
-  std::vector<std::vector<std::size_t>> body_ends(n_destinations);
+  std::vector<std::vector<PointPick>> picks(n_destinations);
+  std::vector<std::vector<std::size_t>> body_begin(n_destinations, std::vector<std::size_t>{0});
   for (std::size_t b = 0; b < points.n_bodies(); ++b)
   {
     for (std::size_t p = points.begin_of(b); p < points.end_of(b); ++p)
-      chosen[destination[p]].push_back(p);
+      if (destination[p] >= 0)
+        picks[destination[p]].push_back({0, p});
     for (int d = 0; d < n_destinations; ++d)
-      body_ends[d].push_back(chosen[d].size());
+      body_begin[d].push_back(picks[d].size());
   }
-  std::vector<Particles> result(n_destinations, empty_like(points));
+  std::vector<Particles> result;
   for (int d = 0; d < n_destinations; ++d)
-  {
-    const std::vector<std::size_t>& order = chosen[d];
-    for_each_array_pair(result[d], points,
-                        [&order](auto& target, const auto& source)
-                        {
-                          target.resize(order.size());
-                          for (std::size_t i = 0; i < order.size(); ++i)
-                            target[i] = source[order[i]];
-                        });
-    for (std::size_t b = 0; b < points.n_bodies(); ++b)
-      result[d].body_begin[b + 1] = body_ends[d][b];
-  }
+    result.push_back(gather({&points}, picks[d], body_begin[d]));
   return result;
 }
 
@@ -127,29 +126,36 @@ Particles from_bytes(const char* data, const std::size_t size)
   return points;
 }
 
+Particles merge_points(const Particles& points, const std::vector<char>& keep,
+                       const std::vector<Particles>& incoming)
+{
+  std::vector<const Particles*> sources{&points};
+  for (const Particles& more : incoming)
+  {
+    if (more.size() > 0 && more.n_bodies() != points.n_bodies())
+      throw std::invalid_argument("merge_points: containers have different bodies");
+    sources.push_back(&more);
+  }
+  std::vector<PointPick> picks;
+  std::vector<std::size_t> body_begin{0};
+  for (std::size_t b = 0; b < points.n_bodies(); ++b)
+  {
+    for (std::size_t p = points.begin_of(b); p < points.end_of(b); ++p)
+      if (keep[p])
+        picks.push_back({0, p});
+    for (std::size_t i = 1; i < sources.size(); ++i)
+      if (sources[i]->size() > 0)
+        for (std::size_t p = sources[i]->begin_of(b); p < sources[i]->end_of(b); ++p)
+          picks.push_back({i, p});
+    body_begin.push_back(picks.size());
+  }
+  return gather(sources, picks, std::move(body_begin));
+}
+
 void append_points(Particles& points, const Particles& more)
 {
   if (more.size() == 0)
     return;
-  if (more.n_bodies() != points.n_bodies())
-    throw std::invalid_argument("append_points: containers have different bodies");
-  // Interleave body by body: the new order takes each body's old points, then its new ones.
-  const std::size_t n_old = points.size();
-  std::vector<std::size_t> order;
-  order.reserve(n_old + more.size());
-  std::vector<std::size_t> new_begin{0};
-  for (std::size_t b = 0; b < points.n_bodies(); ++b)
-  {
-    for (std::size_t p = points.begin_of(b); p < points.end_of(b); ++p)
-      order.push_back(p);
-    for (std::size_t p = more.begin_of(b); p < more.end_of(b); ++p)
-      order.push_back(n_old + p);
-    new_begin.push_back(order.size());
-  }
-  // Concatenate the arrays (old, then new), then reorder into body ranges.
-  for_each_array_pair(points, more, [](auto& values, const auto& extra)
-                      { values.insert(values.end(), extra.begin(), extra.end()); });
-  points.permute(order);
-  points.body_begin = new_begin;
+  points = merge_points(points, std::vector<char>(points.size(), 1), {more});
 }
 } // namespace vulnus::mpm

@@ -9,7 +9,8 @@
 
 namespace vulnus::mpm
 {
-/// The points whose destination equals d, for each d in [0, n_destinations), body ranges kept.
+/// The points whose destination equals d, for each d in [0, n_destinations), body ranges
+/// kept; points with a negative destination go nowhere.
 std::vector<Particles> split_by_destination(const Particles& points, const std::vector<int>& destination,
                                             int n_destinations);
 
@@ -17,6 +18,11 @@ std::vector<Particles> split_by_destination(const Particles& points, const std::
 /// std::runtime_error on a size mismatch.
 std::vector<char> to_bytes(const Particles& points);
 Particles from_bytes(const char* data, std::size_t size);
+
+/// The points flagged in `keep`, then those of each `incoming` container, body by body, in
+/// one copy (incoming containers are empty or have the same bodies).
+Particles merge_points(const Particles& points, const std::vector<char>& keep,
+                       const std::vector<Particles>& incoming);
 
 /// Appends the points of `more` body by body (both must have the same number of bodies).
 void append_points(Particles& points, const Particles& more);

@@ -223,13 +223,13 @@ void Solver::advance(const double cap)
   if (parameters.remove_points_leaving_grid)
     remove_points_outside_grid();
   check_state();
-  const bool sort_now = parameters.sort_interval > 0 && n_steps % parameters.sort_interval == 0;
-  if (sort_now)
-    rebalance_slabs();
+  if (parameters.sort_interval > 0 && n_steps % parameters.sort_interval == 0)
+  {
+    rebalance_slabs(); // re-cuts the slabs and migrates
+    sort_points();
+  }
   else
     migrate_points(false);
-  if (sort_now)
-    sort_points();
   lap(timings.checks_and_sorting);
 }
 
@@ -273,36 +273,28 @@ void Solver::remove_points_outside_grid()
   const Vector3 upper = grid.upper_corner().array() + 0.999 * grid.cell_size();
   const std::size_t n = particles.size();
   std::vector<char> keep(n, 1);
-  std::size_t n_outside = 0;
-  const double energy_before = outflow_energy;
-  const Vector3 momentum_before = outflow_momentum;
+  // This step's outflow: count, energy, momentum; summed over the ranks.
+  double outflow[5] = {0, 0, 0, 0, 0};
   for (std::size_t p = 0; p < n; ++p)
   {
     const Vector3& x = particles.position[p];
     if (!x.allFinite() || ((x.array() >= lower.array()).all() && (x.array() <= upper.array()).all()))
       continue; // NaN is a blow-up, not an outflow: check_state reports it
     keep[p] = 0;
-    ++n_outside;
     const double m = particles.mass[p];
-    outflow_energy += 0.5 * m * particles.velocity[p].squaredNorm() +
-                      particles.reference_volume[p] *
-                        (particles.energy_density[p] + particles.dissipated_density[p]);
-    outflow_momentum += m * particles.velocity[p];
-  }
-  if (n_outside > 0)
-    particles.keep_only(keep);
-  if (ranks.distributed()) // the totals are over all ranks
-  {
-    double totals[6] = {double(n_outside), outflow_energy - energy_before, 0, 0, 0, 0};
-    const Vector3 momentum = outflow_momentum - momentum_before;
+    outflow[0] += 1.0;
+    outflow[1] += 0.5 * m * particles.velocity[p].squaredNorm() +
+                  particles.reference_volume[p] *
+                    (particles.energy_density[p] + particles.dissipated_density[p]);
     for (int d = 0; d < 3; ++d)
-      totals[2 + d] = momentum[d];
-    ranks.sum(totals, 5);
-    n_outside = static_cast<std::size_t>(totals[0]);
-    outflow_energy = energy_before + totals[1];
-    outflow_momentum = momentum_before + Vector3(totals[2], totals[3], totals[4]);
+      outflow[2 + d] += m * particles.velocity[p][d];
   }
-  n_removed += n_outside;
+  if (outflow[0] > 0)
+    particles.keep_only(keep);
+  ranks.sum(outflow, 5);
+  n_removed += static_cast<std::size_t>(outflow[0]);
+  outflow_energy += outflow[1];
+  outflow_momentum += Vector3(outflow[2], outflow[3], outflow[4]);
 }
 
 std::string Solver::describe_point(const std::size_t p) const

@@ -14,22 +14,18 @@ namespace vulnus::mpm
 {
 namespace
 {
-/// Points per cell layer along each axis (layers outside the grid count to the end layers).
-std::vector<std::vector<std::uint64_t>> layer_histograms(const Particles& particles,
-                                                         const Grid& grid)
+/// Points per cell layer along `axis` (points outside the grid count to the end layers).
+std::vector<std::uint64_t> layer_histogram(const Particles& particles, const Grid& grid,
+                                           const int axis)
 {
-  std::vector<std::vector<std::uint64_t>> counts(3);
-  for (int a = 0; a < 3; ++a)
-    counts[a].assign(grid.cells()[a], 0);
+  const int n_layers = grid.cells()[axis];
+  std::vector<std::uint64_t> counts(n_layers, 0);
   for (const Vector3& x : particles.position)
   {
-    const Vector3 s = grid.to_cell_units(x);
-    for (int a = 0; a < 3; ++a)
-    {
-      const double layer = std::clamp(std::floor(s[a]), 0.0, double(grid.cells()[a] - 1));
-      if (std::isfinite(layer))
-        ++counts[a][static_cast<std::size_t>(layer)];
-    }
+    const double layer = std::clamp(
+      std::floor((x[axis] - grid.origin()[axis]) * grid.inverse_cell_size()), 0.0, double(n_layers - 1));
+    if (std::isfinite(layer))
+      ++counts[static_cast<std::size_t>(layer)];
   }
   return counts;
 }
@@ -41,7 +37,9 @@ void Solver::distribute_points()
   if (!ranks.distributed())
     return;
   // Every rank built every point, so the histograms agree without communication.
-  const auto counts = layer_histograms(particles, grid);
+  std::vector<std::vector<std::uint64_t>> counts;
+  for (int a = 0; a < 3; ++a)
+    counts.push_back(layer_histogram(particles, grid, a));
   const int axis = choose_slab_axis(counts);
   partition = SlabPartition::balanced(axis, counts[axis], ranks.size());
   // Contact sums count a node shared by two slabs once: on the lower of the two ranks.
@@ -57,7 +55,7 @@ void Solver::rebalance_slabs()
 {
   if (!ranks.distributed())
     return;
-  std::vector<std::uint64_t> counts = layer_histograms(particles, grid)[partition.axis()];
+  std::vector<std::uint64_t> counts = layer_histogram(particles, grid, partition.axis());
   ranks.sum(counts.data(), static_cast<int>(counts.size()));
   partition = SlabPartition::balanced(partition.axis(), counts, ranks.size());
   migrate_points(true);
@@ -68,15 +66,31 @@ void Solver::migrate_points(const bool to_any_rank)
   if (!ranks.distributed())
     return;
   const int me = ranks.rank();
-  std::vector<int> destination(particles.size());
+  // Destination of each leaving point (-1: it stays). A step moves a point by less than a
+  // cell (CFL < 1) and slabs are several cells thick, so between re-cuts only the neighbours
+  // receive points.
+  std::vector<int> destination(particles.size(), -1);
+  std::vector<char> stays(particles.size(), 1);
   std::size_t n_leaving = 0;
+  std::string problem;
   for (std::size_t p = 0; p < particles.size(); ++p)
   {
-    destination[p] = partition.rank_of_position(grid, particles.position[p]);
-    n_leaving += destination[p] != me;
+    const int owner = partition.rank_of_position(grid, particles.position[p]);
+    if (owner == me)
+      continue;
+    destination[p] = owner;
+    stays[p] = 0;
+    ++n_leaving;
+    if (!to_any_rank && std::abs(owner - me) > 1 && problem.empty())
+      problem = "point moved across a whole slab in one step at step " + std::to_string(n_steps) +
+                ", " + describe_point(p) +
+                "; likely cause: an unstable step (lower Time/CFL) or a bullet speed far beyond "
+                "the time step's wave speed";
   }
-  // A step moves a point by less than a cell (CFL < 1) and slabs are several cells thick,
-  // so between rebalancing only the neighbours receive points.
+  problem = ranks.first_message(problem);
+  if (!problem.empty())
+    throw BlowUp(problem);
+
   std::vector<int> partners;
   if (to_any_rank)
     for (int r = 0; r < ranks.size(); ++r)
@@ -85,34 +99,21 @@ void Solver::migrate_points(const bool to_any_rank)
     for (const int r : {me - 1, me + 1})
       if (r >= 0 && r < ranks.size())
         partners.push_back(r);
-  std::string problem;
-  for (std::size_t p = 0; p < particles.size() && !to_any_rank; ++p)
-    if (std::abs(destination[p] - me) > 1)
-    {
-      problem = "point moved across a whole slab in one step at step " + std::to_string(n_steps) +
-                ", " + describe_point(p) +
-                "; likely cause: an unstable step (lower Time/CFL) or a bullet speed far beyond "
-                "the time step's wave speed";
-      break;
-    }
-  problem = ranks.first_message(problem);
-  if (!problem.empty())
-    throw BlowUp(problem);
-
-  std::vector<Particles> parts;
+  std::vector<Particles> leaving;
   if (n_leaving > 0)
-    parts = split_by_destination(particles, destination, ranks.size());
+    leaving = split_by_destination(particles, destination, ranks.size());
   std::vector<std::vector<char>> outgoing(partners.size());
   for (std::size_t i = 0; i < partners.size(); ++i)
     if (n_leaving > 0 && partners[i] != me)
-      outgoing[i] = to_bytes(parts[partners[i]]);
-  const std::vector<std::vector<char>> incoming =
+      outgoing[i] = to_bytes(leaving[partners[i]]);
+  const std::vector<std::vector<char>> incoming_bytes =
     to_any_rank ? ranks.exchange_with_all(outgoing) : ranks.exchange_with(partners, outgoing);
-  if (n_leaving > 0)
-    particles = std::move(parts[me]);
+  std::vector<Particles> incoming;
   for (std::size_t i = 0; i < partners.size(); ++i)
-    if (partners[i] != me && !incoming[i].empty())
-      append_points(particles, from_bytes(incoming[i].data(), incoming[i].size()));
+    if (partners[i] != me && !incoming_bytes[i].empty())
+      incoming.push_back(from_bytes(incoming_bytes[i].data(), incoming_bytes[i].size()));
+  if (n_leaving > 0 || !incoming.empty())
+    particles = merge_points(particles, stays, incoming);
   volumetric_rate.resize(particles.size(), 0.0);
 }
 
@@ -130,15 +131,17 @@ void Solver::sum_node_data_with_neighbours()
   for (const int r : {me - 1, me + 1})
     if (r >= 0 && r < ranks.size())
       partners.push_back(r);
+  std::vector<std::pair<int, int>> reach; // node layers each partner's points touch
+  for (const int r : partners)
+    reach.push_back(partition.touched_node_layers(r, below, above));
   std::vector<std::vector<char>> outgoing(partners.size());
-  for (std::size_t i = 0; i < partners.size(); ++i)
+  for (std::size_t s = 0; s < grid.n_active(); ++s)
   {
-    const auto [lowest, highest] = partition.touched_node_layers(partners[i], below, above);
-    for (std::size_t s = 0; s < grid.n_active(); ++s)
+    const std::int64_t key = grid.active_keys()[s];
+    const int layer = grid.node_ijk(key)[axis];
+    for (std::size_t i = 0; i < partners.size(); ++i)
     {
-      const std::int64_t key = grid.active_keys()[s];
-      const int layer = grid.node_ijk(key)[axis];
-      if (layer < lowest || layer > highest)
+      if (layer < reach[i].first || layer > reach[i].second)
         continue;
       std::vector<char>& out = outgoing[i];
       const std::size_t offset = out.size();
@@ -237,12 +240,13 @@ Particles Solver::gather_points() const
 {
   if (!ranks.distributed())
     return particles;
-  const std::vector<std::vector<char>> parts = ranks.gather_to_root(to_bytes(particles));
-  Particles all;
-  all.body_begin.assign(particles.n_bodies() + 1, 0);
-  for (const std::vector<char>& part : parts)
-    append_points(all, from_bytes(part.data(), part.size()));
-  return all;
+  const std::vector<std::vector<char>> messages = ranks.gather_to_root(to_bytes(particles));
+  std::vector<Particles> parts;
+  for (const std::vector<char>& message : messages)
+    parts.push_back(from_bytes(message.data(), message.size()));
+  Particles none;
+  none.body_begin.assign(particles.n_bodies() + 1, 0);
+  return merge_points(none, {}, parts);
 }
 
 std::size_t Solver::n_points_all_ranks() const
