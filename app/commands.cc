@@ -33,8 +33,12 @@ int run_command(const CommandLine& line)
   }
   catch (const DeckError& error)
   {
-    if (launcher_rank() == 0)
-      report(error);
+    // Every rank of an mpirun found the same problem; rank 0 reports it and carries the exit
+    // status. The others leave quietly: a non-zero exit of theirs makes mpirun kill rank 0
+    // before its report reaches the terminal.
+    if (launcher_rank() != 0)
+      return 0;
+    report(error);
     return 2;
   }
   parameters.output.restart = !line.restart_directory.empty();

@@ -112,7 +112,7 @@ void check_grid(const mpm::SceneParameters& scene, Checker& check)
     }
 }
 
-/// A distributed pure-MPM run gives each rank a slab of at least
+/// A distributed MPM or hybrid run gives each rank a slab of at least
 /// mpm::SlabPartition::min_layers_per_rank cell layers along one axis.
 void check_rank_count(const mpm::SceneParameters& scene, Checker& check)
 {
@@ -416,10 +416,9 @@ std::vector<std::string> check_run_parameters(const RunParameters& parameters,
   check_bodies(parameters.scene, check);
   check_body_layout(parameters.scene, check);
   if (parameters.method == Method::mpm && !parameters.hybrid.enabled)
-  {
     check_scene_size(parameters.scene, check);
+  if (parameters.method == Method::mpm) // pure MPM and the hybrid's MPM zone
     check_rank_count(parameters.scene, check);
-  }
   return check.messages;
 }
 } // namespace vulnus::app

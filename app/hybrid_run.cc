@@ -1,4 +1,6 @@
-// Hybrid MPM-FE time loop with its outputs.
+// Hybrid MPM-FE time loop with its outputs. Under mpirun every rank runs it (the MPM zone in
+// slabs, the FE far field in deal.II's partition); rank 0 writes the log, history and summary,
+// all ranks write their points into one particle file per output time.
 #include "app/hybrid_run.h"
 
 #include "app/csv_history.h"
@@ -11,6 +13,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <memory>
 #include <iomanip>
 #include <sstream>
 
@@ -37,17 +40,25 @@ const char* integrator_name(const fem::TimeIntegrator i)
   return "?";
 }
 
+/// Collective.
 void log_scene(const coupling::HybridSolver& solver, RunDirectory& directory)
 {
   const coupling::HybridScene& split = solver.scene();
+  const std::size_t n_points = solver.mpm().n_points_all_ranks();
   std::ostringstream o;
   o << "hybrid scene: MPM zone (" << split.hybrid.zone_min[0] << ", " << split.hybrid.zone_min[1]
     << ", " << split.hybrid.zone_min[2] << ") to (" << split.hybrid.zone_max[0] << ", "
     << split.hybrid.zone_max[1] << ", " << split.hybrid.zone_max[2] << ") m: "
-    << solver.mpm().points().size() << " points; FE far field: " << solver.fe().n_active_cells()
+    << n_points << " points; FE far field: " << solver.fe().n_active_cells()
     << " cells, " << solver.fe().n_dofs() << " dofs, " << integrator_name(split.fe.integrator)
     << "; " << solver.n_interface_nodes() << " shared interface nodes, scheme "
     << scheme_name(split.hybrid.scheme) << ", " << omp_get_max_threads() << " thread(s)";
+  const mpm::RankGroup& ranks = solver.mpm().rank_group();
+  if (ranks.distributed())
+    o << " on each of " << ranks.size() << " MPI ranks (MPM zone in slabs along axis "
+      << solver.mpm().slabs().axis() << ", FE cells by deal.II's partition; "
+      << solver.n_interface_nodes_across_ranks()
+      << " interface nodes have their FE owner and MPM slab on different ranks)";
   directory.log(o.str());
 }
 } // namespace
@@ -77,8 +88,16 @@ int run_hybrid_scene(const RunParameters& parameters, RunDirectory& directory)
   const double initial_energy = hybrid_scene_energy(solver, mpm_side.diagnostics(),
                                                     solver.fe().diagnostics());
 
-  CsvHistory history(directory.file("history.csv"), hybrid_history_columns());
-  ParticleOutput output(directory.path());
+  const mpm::RankGroup& ranks = mpm_side.rank_group();
+  std::unique_ptr<CsvHistory> history; // rank 0
+  if (directory.writes_files())
+    history = std::make_unique<CsvHistory>(directory.file("history.csv"), hybrid_history_columns());
+  auto add_history_row = [&] {
+    const std::vector<double> row = hybrid_history_row(solver, initial_energy); // collective
+    if (history)
+      history->add_row(row);
+  };
+  ParticleOutput output(directory.path(), "particles", ranks.communicator());
   const double output_interval = parameters.output.particle_interval;
   auto write_outputs = [&] {
     output.write(solver.time(), mpm_snapshot(mpm_side));
@@ -86,7 +105,7 @@ int run_hybrid_scene(const RunParameters& parameters, RunDirectory& directory)
   };
   write_outputs();
   double next_output = output_interval > 0 ? output_interval : parameters.scene.end_time * 2;
-  history.add_row(hybrid_history_row(solver, initial_energy));
+  add_history_row();
 
   double last_progress = 0.0;
   while (!solver.finished())
@@ -106,13 +125,13 @@ int run_hybrid_scene(const RunParameters& parameters, RunDirectory& directory)
       break;
     }
     if (mpm_side.step_count() % parameters.output.history_interval == 0)
-      history.add_row(hybrid_history_row(solver, initial_energy));
+      add_history_row();
     if (solver.time() >= next_output * (1 - 1e-12))
     {
       write_outputs();
       next_output += output_interval;
     }
-    const double wall = wall_seconds();
+    const double wall = ranks.max(wall_seconds()); // the same on every rank
     if (wall - last_progress >= 5.0)
     {
       last_progress = wall;
@@ -127,10 +146,11 @@ int run_hybrid_scene(const RunParameters& parameters, RunDirectory& directory)
   totals.wall_seconds = wall_seconds();
   if (totals.completed)
   {
-    history.add_row(hybrid_history_row(solver, initial_energy));
+    add_history_row();
     write_outputs();
   }
-  history.flush();
+  if (history)
+    history->flush();
 
   const fem::FeDiagnostics fe = solver.fe().diagnostics();
   if (fe.n_failed_points > 0)
@@ -145,8 +165,12 @@ int run_hybrid_scene(const RunParameters& parameters, RunDirectory& directory)
   for (const std::string& w : totals.warnings)
     directory.warn(w);
 
+  const mpm::Particles all_points = mpm_side.gather_points();
   const mpm::SceneDiagnostics m = mpm_side.diagnostics();
-  nlohmann::json summary = mpm_summary(mpm_side, totals, mpm_side.points(), m);
+  totals.mpi_bytes_sent = ranks.sum(ranks.bytes_sent());
+  if (!directory.writes_files())
+    return totals.completed ? 0 : 1;
+  nlohmann::json summary = mpm_summary(mpm_side, totals, all_points, m);
   const double energy = hybrid_scene_energy(solver, m, fe);
   const coupling::InterfaceLedger& ledger = solver.ledger();
   summary["method"] = "hybrid";
@@ -164,6 +188,7 @@ int run_hybrid_scene(const RunParameters& parameters, RunDirectory& directory)
                        {"mpm_steps", ledger.mpm_steps},
                        {"fe_steps", ledger.fe_steps},
                        {"interface_nodes", solver.n_interface_nodes()},
+                       {"interface_nodes_across_ranks", solver.n_interface_nodes_across_ranks()},
                        {"fe_dofs", solver.fe().n_dofs()},
                        {"interface_mpm_work_J", ledger.mpm_work},
                        {"interface_fe_work_J", ledger.fe_work},

@@ -35,7 +35,9 @@ int run_simulation(const RunParameters& parameters, RunDirectory& directory)
     directory.log("method: pure finite elements");
     return run_fe_scene(parameters, directory);
   }
-  directory.log("method: hybrid, MPM zone coupled to an FE far field");
+  directory.log("method: hybrid, MPM zone coupled to an FE far field, on " +
+                std::to_string(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)) +
+                " MPI rank(s)");
   return run_hybrid_scene(parameters, directory);
 }
 } // namespace vulnus::app

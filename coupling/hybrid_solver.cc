@@ -1,9 +1,12 @@
 // Hybrid MPM-FE stepping: interface matching, the summed-node prediction, the FE step and the
-// interface ledger.
+// interface ledger. Distributed: every rank holds all interface nodes in one order (by grid
+// key); the MPM state arrives summed over the MPM ranks, the FE state is summed from the FE
+// ranks owning the nodes, so every rank predicts the same velocities and keeps the same ledger.
 #include "coupling/hybrid_solver.h"
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -27,10 +30,7 @@ HybridSolver::HybridSolver(const HybridScene& scene, MPI_Comm communicator,
                            const std::function<void(fem::FarFieldSolver&)>& before_fe_setup)
   : split(scene)
 {
-  if (dealii::Utilities::MPI::n_mpi_processes(communicator) != 1)
-    throw std::invalid_argument("Hybrid/Enabled: hybrid scenes run on one MPI rank (the MPM "
-                                "side is not distributed yet); run without mpirun");
-  mpm_solver = std::make_unique<mpm::Solver>(split.mpm);
+  mpm_solver = std::make_unique<mpm::Solver>(split.mpm, communicator);
   fe_solver = std::make_unique<fem::FarFieldSolver>(split.fe, communicator);
   if (before_fe_setup)
     before_fe_setup(*fe_solver);
@@ -42,9 +42,18 @@ HybridSolver::HybridSolver(const HybridScene& scene, MPI_Comm communicator,
       v[c] = v0[c];
     return v;
   });
+  match_interface_nodes(communicator);
+  velocity_start.assign(keys.size(), mpm::Vector3::Zero());
+  velocity_end.assign(keys.size(), mpm::Vector3::Zero());
+  mpm_solver->share_nodes({split.coupled_body, keys, this});
+}
 
+void HybridSolver::match_interface_nodes(MPI_Comm communicator)
+{
   const mpm::Grid& grid = mpm_solver->background_grid();
   const double h = grid.cell_size();
+  std::vector<std::int64_t> my_keys;
+  std::string problem;
   for (const fem::NodeRecord& node : fe_solver->interface_nodes())
   {
     int ijk[3];
@@ -57,14 +66,38 @@ HybridSolver::HybridSolver(const HybridScene& scene, MPI_Comm communicator,
       std::ostringstream s;
       s << "Hybrid/Zone min, Hybrid/Zone max: the FE interface node at (" << x[0] << ", " << x[1]
         << ", " << x[2] << ") m is not an MPM grid node; the zone must lie on grid nodes";
-      throw std::invalid_argument(s.str());
+      problem = s.str();
+      break;
     }
-    keys.push_back(grid.node_key(ijk[0], ijk[1], ijk[2]));
+    my_keys.push_back(grid.node_key(ijk[0], ijk[1], ijk[2]));
   }
-  fe_mass = fe_solver->interface_lumped_masses();
-  velocity_start.assign(keys.size(), mpm::Vector3::Zero());
-  velocity_end.assign(keys.size(), mpm::Vector3::Zero());
-  mpm_solver->share_nodes({split.coupled_body, keys, this});
+  const mpm::RankGroup& ranks = mpm_solver->rank_group();
+  if (const std::string first = ranks.first_message(problem); !first.empty())
+    throw std::invalid_argument(first);
+
+  // Every rank lists all interface nodes in one order (by grid key); each FE rank owns some.
+  for (const std::vector<std::int64_t>& owned :
+       dealii::Utilities::MPI::all_gather(communicator, my_keys))
+    keys.insert(keys.end(), owned.begin(), owned.end());
+  std::sort(keys.begin(), keys.end());
+  if (std::adjacent_find(keys.begin(), keys.end()) != keys.end())
+    throw std::logic_error("hybrid: two FE interface nodes sit on one MPM grid node");
+  fe_node_index.clear();
+  for (const std::int64_t key : my_keys)
+    fe_node_index.push_back(
+      static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), key) - keys.begin()));
+
+  const mpm::SlabPartition& slabs = mpm_solver->slabs();
+  std::uint64_t elsewhere = 0;
+  for (const std::int64_t key : my_keys)
+    elsewhere += slabs.rank_of_node(grid, key) != ranks.rank();
+  fe_nodes_on_other_mpm_ranks = ranks.sum(elsewhere);
+
+  fe_mass.assign(keys.size(), 0.0);
+  const std::vector<double> my_masses = fe_solver->interface_lumped_masses();
+  for (std::size_t i = 0; i < fe_node_index.size(); ++i)
+    fe_mass[fe_node_index[i]] = my_masses[i];
+  ranks.sum(fe_mass.data(), static_cast<int>(fe_mass.size()));
 }
 
 HybridSolver::~HybridSolver() = default;
@@ -104,18 +137,43 @@ void HybridSolver::advance()
     window_open = false;
 }
 
-void HybridSolver::predict_interface(const double dt, const mpm::SharedNodeState& mpm_side)
+void HybridSolver::gather_fe_interface_state()
 {
+  // Velocity and force of every interface node from the FE rank owning it.
   const std::vector<dealii::Tensor<1, 3>> forces = fe_solver->interface_nodal_forces();
   const std::vector<fem::NodeRecord>& nodes = fe_solver->interface_nodes();
+  std::vector<double> packed(6 * keys.size(), 0.0);
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    const dealii::Tensor<1, 3> v = fe_solver->velocity(nodes[i]);
+    const std::size_t k = fe_node_index[i];
+    for (unsigned int c = 0; c < 3; ++c)
+    {
+      packed[6 * k + c] = v[c];
+      packed[6 * k + 3 + c] = forces[i][c];
+    }
+  }
+  mpm_solver->rank_group().sum(packed.data(), static_cast<int>(packed.size()));
+  fe_velocity.resize(keys.size());
+  fe_force.resize(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    fe_velocity[k] = mpm::Vector3(packed[6 * k], packed[6 * k + 1], packed[6 * k + 2]);
+    fe_force[k] = mpm::Vector3(packed[6 * k + 3], packed[6 * k + 4], packed[6 * k + 5]);
+  }
+}
+
+void HybridSolver::predict_interface(const double dt, const mpm::SharedNodeState& mpm_side)
+{
+  gather_fe_interface_state();
   const bool staggered = split.fe.staggered_velocity;
   const mpm::Grid& grid = mpm_solver->background_grid();
   for (std::size_t k = 0; k < keys.size(); ++k)
   {
     // The shared node keeps the FE interface velocity as its own and is accelerated by the
     // summed forces of both sides.
-    const mpm::Vector3 v_node = to_eigen(fe_solver->velocity(nodes[k]));
-    const mpm::Vector3 f_fe = to_eigen(forces[k]);
+    const mpm::Vector3& v_node = fe_velocity[k];
+    const mpm::Vector3& f_fe = fe_force[k];
     const double m_fe = fe_mass[k];
     mpm::Vector3 v = v_node + dt * (mpm_side.force[k] + f_fe) / (mpm_side.mass[k] + m_fe);
     // Supports of the grid faces hold the shared node on both sides.
@@ -132,9 +190,9 @@ void HybridSolver::predict_interface(const double dt, const mpm::SharedNodeState
 
 void HybridSolver::advance_fe(const double dt)
 {
-  targets.resize(keys.size());
-  for (std::size_t k = 0; k < keys.size(); ++k)
-    targets[k] = to_tensor(velocity_end[k]);
+  targets.resize(fe_node_index.size());
+  for (std::size_t i = 0; i < fe_node_index.size(); ++i)
+    targets[i] = to_tensor(velocity_end[fe_node_index[i]]);
   fe_solver->set_interface_velocities(targets);
   fe_solver->advance(dt);
   ++book.fe_steps;

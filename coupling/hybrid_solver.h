@@ -32,7 +32,8 @@ class HybridSolver : public mpm::InterfacePartner
 {
 public:
   /// Builds both sides and matches every FE interface node to an MPM grid node (throws
-  /// std::invalid_argument naming a node that does not match). Runs on one MPI rank.
+  /// std::invalid_argument naming a node that does not match). Collective: the MPM side is
+  /// distributed over the ranks of `communicator` in slabs, the FE side by deal.II's partition.
   /// before_fe_setup may prescribe FE face fields (verification problems).
   HybridSolver(const HybridScene& scene, MPI_Comm communicator,
                const std::function<void(fem::FarFieldSolver&)>& before_fe_setup = {});
@@ -53,6 +54,9 @@ public:
   const HybridScene& scene() const { return split; }
   const InterfaceLedger& ledger() const { return book; }
   std::size_t n_interface_nodes() const { return keys.size(); }
+  /// Interface nodes whose FE owner rank is not the rank of the MPM slab holding the grid
+  /// node (at the start; 0 on one rank).
+  std::size_t n_interface_nodes_across_ranks() const { return fe_nodes_on_other_mpm_ranks; }
 
   /// Total momentum of both sides, kg m/s (FE with its lumped mass).
   Eigen::Vector3d total_momentum() const;
@@ -64,6 +68,11 @@ public:
                 std::vector<mpm::Vector3>& velocity_end) override;
 
 private:
+  /// Lists every FE interface node by its grid key on every rank (sorted) and sums the FE
+  /// masses there.
+  void match_interface_nodes(MPI_Comm communicator);
+  /// fe_velocity and fe_force of every interface node, from the FE ranks owning them.
+  void gather_fe_interface_state();
   /// Shared-node velocity after a step dt: v + dt (f_mpm + f_fe) / (m_mpm + m_fe), with v the
   /// node's own (the FE interface) velocity.
   void predict_interface(double dt, const mpm::SharedNodeState& mpm_side);
@@ -75,8 +84,10 @@ private:
   HybridScene split;
   std::unique_ptr<mpm::Solver> mpm_solver;
   std::unique_ptr<fem::FarFieldSolver> fe_solver;
-  std::vector<std::int64_t> keys;
-  std::vector<double> fe_mass;
+  std::vector<std::int64_t> keys;         ///< every interface node's grid key, sorted
+  std::vector<std::size_t> fe_node_index; ///< position in keys of each FE interface node owned here
+  std::vector<double> fe_mass;            ///< lumped FE mass of each key, kg
+  std::size_t fe_nodes_on_other_mpm_ranks = 0;
   InterfaceLedger book;
 
   // Multi-step window.
@@ -85,7 +96,7 @@ private:
   bool window_open = false;
   std::vector<mpm::Vector3> velocity_start; ///< FE interface velocity at the window start
   std::vector<mpm::Vector3> velocity_end;   ///< at the window end (or over it, staggered)
-  std::vector<mpm::Vector3> fe_velocity, fe_force;
+  std::vector<mpm::Vector3> fe_velocity, fe_force; ///< FE interface state, by key
   std::vector<dealii::Tensor<1, 3>> targets;
 };
 } // namespace vulnus::coupling

@@ -14,7 +14,8 @@ namespace vulnus::mpm
 {
 using Vector3 = Eigen::Vector3d;
 
-/// The MPM side of the shared nodes in one step, indexed like SharedNodes::keys.
+/// The MPM side of the shared nodes in one step, indexed like SharedNodes::keys; in a
+/// distributed run summed over the ranks (the same on every rank).
 struct SharedNodeState
 {
   std::vector<double> mass;      ///< kg; 0 where no point of the coupled body reaches the node

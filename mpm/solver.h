@@ -79,7 +79,9 @@ public:
 
   /// Shares grid nodes of one body with a partner solver (the coupling): every step the
   /// partner sees the MPM mass, momentum and force there and sets their velocity. The
-  /// partner must outlive the solver or be replaced.
+  /// partner must outlive the solver or be replaced. Distributed: every rank passes the same
+  /// keys; the partner sees the state summed over the ranks (identical on each) and returns
+  /// velocities for every key, and each rank uses those of the nodes it holds.
   void share_nodes(const SharedNodes& nodes);
   const SharedNodes& shared_nodes() const { return shared; }
 
@@ -138,6 +140,7 @@ public:
 private:
   void sort_points();
   void exchange_shared_nodes(double dt);
+  void sum_shared_state_over_ranks();
   void impose_shared_velocities();
   void check_state() const;
   std::string state_problem() const;

@@ -1,5 +1,6 @@
 // The solver's side of the node sharing with a partner solver: gathers the MPM mass, momentum
-// and force at the shared nodes after the grid update and imposes the returned velocities.
+// and force at the shared nodes after the grid update (summed over the ranks, a node on a cut
+// plane counted once), and imposes the returned velocities at the nodes this rank holds.
 #include "mpm/solver.h"
 
 #include <stdexcept>
@@ -44,6 +45,7 @@ void Solver::exchange_shared_nodes(const double dt)
     shared_state.momentum[k] = d.momentum;
     shared_state.force[k] = d.force + d.mass * parameters.gravity;
   }
+  sum_shared_state_over_ranks();
   shared.partner->exchange(current_time, dt, shared_state, shared_velocity_start,
                           shared_velocity_end);
   for (std::size_t k = 0; k < shared.keys.size(); ++k)
@@ -53,6 +55,34 @@ void Solver::exchange_shared_nodes(const double dt)
       fields.velocity[slot * n_bodies + b] = shared_velocity_start[k];
   }
   impose_shared_velocities();
+}
+
+void Solver::sum_shared_state_over_ranks()
+{
+  if (!ranks.distributed())
+    return;
+  // After the node exchange both ranks of a cut-plane node hold its complete data; only the
+  // lower one contributes.
+  const std::size_t n = shared.keys.size();
+  std::vector<double> packed(7 * n, 0.0);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    if (shared_state.mass[k] <= 0.0 || !grid_settings.owns_node(shared.keys[k]))
+      continue;
+    packed[7 * k] = shared_state.mass[k];
+    for (int c = 0; c < 3; ++c)
+    {
+      packed[7 * k + 1 + c] = shared_state.momentum[k][c];
+      packed[7 * k + 4 + c] = shared_state.force[k][c];
+    }
+  }
+  ranks.sum(packed.data(), static_cast<int>(packed.size()));
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    shared_state.mass[k] = packed[7 * k];
+    shared_state.momentum[k] = Vector3(packed[7 * k + 1], packed[7 * k + 2], packed[7 * k + 3]);
+    shared_state.force[k] = Vector3(packed[7 * k + 4], packed[7 * k + 5], packed[7 * k + 6]);
+  }
 }
 
 void Solver::impose_shared_velocities()

@@ -1,5 +1,6 @@
 // Small hybrid scenes shared by the coupling tests: a block of elastic tissue with an MPM zone
-// inside, and a bar along x whose middle is MPM (a 1D wave problem with rollers).
+// inside, a bar along x whose middle is MPM (a 1D wave problem with rollers), and a slab
+// indented by a rigid punch.
 #pragma once
 
 #include "../fem/fem_test_scenes.h"
@@ -48,6 +49,35 @@ inline fem::FeSceneParameters uniform_far_field(const double h)
   f.grading_ratio = 1.0;
   f.cfl = 0.4;
   return f;
+}
+
+/// Slab [-10, 10] x [0, 10] x [-10, 10] mm on a fixed back face (y+), rollers on the sides;
+/// a rigid 6 x 2 x 6 mm punch pushed into the front face at 1 m/s (Mach 0.07) for 1 ms.
+inline mpm::SceneParameters indentation_scene()
+{
+  const double h = 1e-3;
+  mpm::SceneParameters s = block_scene({-0.01, -0.004, -0.01}, {0.01, 0.01, 0.01}, h);
+  s.bodies[0].box_min = {-0.01, 0.0, -0.01};
+  s.bodies[0].name = "slab";
+  s.domain_faces = {mpm::FaceCondition::roller, mpm::FaceCondition::roller,
+                    mpm::FaceCondition::free,   mpm::FaceCondition::fixed,
+                    mpm::FaceCondition::roller, mpm::FaceCondition::roller};
+  materials::MaterialParameters rigid;
+  rigid.model = "rigid";
+  s.materials.push_back({"punch", rigid});
+  mpm::BodyParameters punch;
+  punch.name = "punch";
+  punch.material = "punch";
+  punch.box_min = {-0.003, -0.002, -0.003};
+  punch.box_max = {0.003, 0.0, 0.003};
+  punch.density = 8000.0;
+  punch.initial_velocity = {0.0, 1.0, 0.0};
+  punch.rigid_motion = mpm::RigidMotion::prescribed;
+  s.bodies.push_back(punch);
+  s.contact.enabled = true;
+  s.contact.friction_coefficient = -1.0; // no slip under the punch
+  s.end_time = 1e-3;
+  return s;
 }
 
 inline HybridParameters zone(const std::array<double, 3>& lo, const std::array<double, 3>& hi,

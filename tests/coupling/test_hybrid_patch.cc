@@ -32,6 +32,7 @@ struct PatchErrors
   double stress_scale = 0.0;
 };
 
+/// Over all ranks (collective).
 double worst_velocity(const HybridSolver& solver, const Eigen::Matrix3d& L)
 {
   double worst = 0.0;
@@ -44,7 +45,7 @@ double worst_velocity(const HybridSolver& solver, const Eigen::Matrix3d& L)
     const mpm::Vector3 X(node.position[0], node.position[1], node.position[2]);
     worst = std::max(worst, (mpm::Vector3(v[0], v[1], v[2]) - L * X).norm());
   }
-  return worst;
+  return dealii::Utilities::MPI::max(worst, solver.fe().communicator());
 }
 
 /// Runs the block with v = L X (constant in the reference frame, F = I + t L) prescribed on
@@ -81,6 +82,7 @@ PatchErrors run_patch(const CouplingScheme scheme, const Eigen::Matrix3d& L)
       for (std::size_t i = 0; i < p.size(); ++i)
         e.stress = std::max(e.stress, std::abs(p.stress[i](a, b) - fe_stress[a][b]));
     }
+  e.stress = dealii::Utilities::MPI::max(e.stress, solver.fe().communicator());
   return e;
 }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -51,16 +52,20 @@ void set_pulse(fem::FeSceneParameters& fe, const double duration)
   fe.faces[0].profile.duration = duration;
 }
 
-/// x velocity of the FE nodes beyond the zone, by node position.
+/// x velocity of the FE nodes beyond the zone, by node position, from all ranks. Collective.
 std::vector<std::pair<double, double>> right_part_velocities(const fem::FarFieldSolver& fe)
 {
-  std::vector<std::pair<double, double>> v;
+  std::vector<double> mine; // x, v pairs
   for (const fem::NodeRecord& node : fe.locally_owned_nodes())
     if (node.position[0] > zone_end + 0.5 * h && node.position[1] < 0.5 * h &&
         node.position[2] < 0.5 * h)
-      v.emplace_back(node.position[0], fe.velocity(node)[0]);
-  std::sort(v.begin(), v.end());
-  return v;
+      mine.insert(mine.end(), {node.position[0], fe.velocity(node)[0]});
+  std::vector<std::pair<double, double>> all;
+  for (const std::vector<double>& part : dealii::Utilities::MPI::all_gather(fe.communicator(), mine))
+    for (std::size_t i = 0; i + 1 < part.size(); i += 2)
+      all.emplace_back(part[i], part[i + 1]);
+  std::sort(all.begin(), all.end());
+  return all;
 }
 
 struct WaveCase

@@ -1,7 +1,7 @@
-// The coarse paper scene (rigid bullet, first 60 microseconds) run by `mpirun -np N vulnus
-// run` on 1, 2 and 3 ranks: the same wound and bullet figures as one process, one particle
-// file per output time holding every point, one XDMF series, and a clear refusal when the
-// grid is too thin for the rank count.
+// The coarse paper scene run by `mpirun -np N vulnus run` on 1, 2 and 3 ranks, pure MPM (rigid
+// bullet, first 60 microseconds) and hybrid (rigid bullet, to the bullet's exit): the same
+// wound and bullet figures as one process, one particle file per output time holding every
+// point, one XDMF series, and a clear refusal when the grid is too thin for the rank count.
 #include "../app/command_runner.h"
 
 #include <nlohmann/json.hpp>
@@ -96,6 +96,53 @@ TEST(DistributedPaperScene, OneTwoAndThreeRanksGiveTheSameWound)
   }
 }
 
+TEST(DistributedPaperScene, HybridOnOneTwoAndThreeRanksGivesTheSameWound)
+{
+  ScratchDirectory scratch("distributed_hybrid");
+  const std::string hybrid_scene = "run '" + source_dir() +
+                                   "/inputs/paper/anisotropic_150ms_coarse_hybrid.prm' --set "
+                                   "'Material bullet/Model=rigid' --set "
+                                   "'Output/Particle output interval=1e-4'";
+  std::vector<nlohmann::json> summaries;
+  for (const int n_ranks : {1, 2, 3})
+  {
+    const std::string name = "np" + std::to_string(n_ranks);
+    const CommandResult r = run_on_ranks(n_ranks, hybrid_scene + " --output " + name, scratch.path);
+    ASSERT_EQ(r.exit_status, 0) << r.out << r.err;
+    summaries.push_back(nlohmann::json::parse(read_text(scratch.path / name / "summary.json")));
+    EXPECT_EQ(summaries.back()["mpi"]["ranks"].get<int>(), n_ranks);
+    if (n_ranks > 1) // the coupling really crosses ranks
+    {
+      EXPECT_GT(summaries.back()["hybrid"]["interface_nodes_across_ranks"].get<long>(), 0);
+    }
+    // t = 0, 1e-4 and the final state: every point in each particle file; FE mesh series too.
+    const std::vector<long> counts = xdmf_point_counts(scratch.path / name / "particles.xdmf");
+    ASSERT_EQ(counts.size(), 3u);
+    for (const long n : counts)
+      EXPECT_EQ(n, summaries.back()["particles"].get<long>());
+    EXPECT_TRUE(fs::exists(scratch.path / name / "fe_mesh.xdmf"));
+  }
+  const nlohmann::json& one = summaries[0];
+  ASSERT_GT(one["hybrid"]["fe_steps"].get<long>(), 1);
+  for (std::size_t k = 1; k < summaries.size(); ++k)
+  {
+    const nlohmann::json& many = summaries[k];
+    EXPECT_EQ(many["steps"], one["steps"]);
+    EXPECT_EQ(many["hybrid"]["fe_steps"], one["hybrid"]["fe_steps"]);
+    // Bounds as for the pure-MPM scene above (round-off from the order of additions at slab
+    // cuts and in the interface sums over ranks).
+    for (const char* kind : {"matrix", "total"})
+    {
+      const double a = one["failed"][kind].get<double>(), b = many["failed"][kind].get<double>();
+      EXPECT_LE(std::abs(a - b), 0.005 * std::max(a, 1.0)) << kind << " on " << k + 1 << " ranks";
+    }
+    const double v1 = one["bullet"]["exit_velocity_m_s"].get<double>();
+    EXPECT_NEAR(many["bullet"]["exit_velocity_m_s"].get<double>(), v1, 1e-6 * std::abs(v1));
+    EXPECT_NEAR(many["energy"]["balance_error"].get<double>(),
+                one["energy"]["balance_error"].get<double>(), 1e-4);
+  }
+}
+
 TEST(DistributedPaperScene, TooManyRanksForTheGridIsRefused)
 {
   ScratchDirectory scratch("distributed_thin");
@@ -104,4 +151,10 @@ TEST(DistributedPaperScene, TooManyRanksForTheGridIsRefused)
     run_on_ranks(3, coarse_scene + " --set 'Grid/Cell size=0.005' --output thin", scratch.path);
   EXPECT_NE(r.exit_status, 0);
   EXPECT_NE((r.out + r.err).find("per rank"), std::string::npos) << r.out << r.err;
+  // The hybrid's MPM zone takes slabs of the same grid.
+  const CommandResult hybrid = run_on_ranks(
+    3, "run '" + source_dir() + "/inputs/paper/anisotropic_150ms_coarse_hybrid.prm' --set "
+    "'Grid/Cell size=0.005' --output thin_hybrid", scratch.path);
+  EXPECT_NE(hybrid.exit_status, 0);
+  EXPECT_NE((hybrid.out + hybrid.err).find("per rank"), std::string::npos) << hybrid.out << hybrid.err;
 }
