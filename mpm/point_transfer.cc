@@ -1,6 +1,7 @@
 // Splitting, flattening and merging point containers.
 #include "mpm/point_transfer.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -152,10 +153,132 @@ Particles merge_points(const Particles& points, const std::vector<char>& keep,
   return gather(sources, picks, std::move(body_begin));
 }
 
+namespace
+{
+/// One element copy applied to every array: from `source` (0: the container itself, i > 0:
+/// incoming[i - 1]) at `from` to the container at `to`. Copies run in list order.
+struct ElementCopy
+{
+  std::size_t source;
+  std::size_t from;
+  std::size_t to;
+};
+
+/// Copies that turn body b's range [begin, begin + size) into a hole-free range
+/// [begin, begin + compacted) in place: holes take the incoming points first, then the last
+/// kept points of the body. Returns the incoming points left over (appended later).
+std::vector<PointPick> fill_holes(std::size_t begin, std::size_t size,
+                                  const std::vector<char>& keep, std::vector<PointPick> arrivals,
+                                  std::vector<ElementCopy>& copies, std::size_t& compacted)
+{
+  std::vector<std::size_t> holes;
+  for (std::size_t p = begin; p < begin + size; ++p)
+    if (!keep[p])
+      holes.push_back(p);
+  const std::size_t filled = std::min(holes.size(), arrivals.size());
+  for (std::size_t k = 0; k < filled; ++k)
+    copies.push_back({arrivals[k].source, arrivals[k].index, holes[k]});
+  compacted = size - holes.size() + filled;
+  std::size_t last = begin + size; // one past the candidate kept point at the end
+  for (std::size_t k = filled; k < holes.size(); ++k)
+  {
+    while (last > holes[k] + 1 && !keep[last - 1])
+      --last;
+    if (last <= holes[k] + 1)
+      break; // the remaining holes are the body's tail
+    --last;
+    copies.push_back({0, last, holes[k]});
+  }
+  arrivals.erase(arrivals.begin(), arrivals.begin() + static_cast<std::ptrdiff_t>(filled));
+  return arrivals;
+}
+
+/// Copies that move a hole-free range of `count` points from `from` to `to`, moving at most
+/// |to - from| points (the range's order rotates). The destination slots outside the old
+/// range must be free.
+void shift_range(const std::size_t from, const std::size_t to, const std::size_t count,
+                 std::vector<ElementCopy>& copies)
+{
+  if (to == from || count == 0)
+    return;
+  const std::size_t distance = to > from ? to - from : from - to;
+  if (distance >= count)
+  {
+    for (std::size_t k = 0; k < count; ++k)
+      copies.push_back({0, from + k, to + k});
+    return;
+  }
+  if (to < from) // the tail fills the free slots in front
+    for (std::size_t k = 0; k < distance; ++k)
+      copies.push_back({0, from + count - distance + k, to + k});
+  else // the head fills the free slots behind
+    for (std::size_t k = 0; k < distance; ++k)
+      copies.push_back({0, from + k, from + count + k});
+}
+} // namespace
+
+void exchange_in_place(Particles& points, const std::vector<char>& keep,
+                       const std::vector<Particles>& incoming)
+{
+  const std::size_t n_bodies = points.n_bodies();
+  std::vector<std::vector<PointPick>> arrivals(n_bodies);
+  for (std::size_t i = 0; i < incoming.size(); ++i)
+  {
+    if (incoming[i].size() == 0)
+      continue;
+    if (incoming[i].n_bodies() != n_bodies)
+      throw std::invalid_argument("exchange_in_place: containers have different bodies");
+    for (std::size_t b = 0; b < n_bodies; ++b)
+      for (std::size_t p = incoming[i].begin_of(b); p < incoming[i].end_of(b); ++p)
+        arrivals[b].push_back({i + 1, p});
+  }
+
+  std::vector<ElementCopy> copies;
+  std::vector<std::size_t> compacted(n_bodies);
+  std::vector<std::vector<PointPick>> extra(n_bodies);
+  std::vector<std::size_t> new_begin{0};
+  for (std::size_t b = 0; b < n_bodies; ++b)
+  {
+    extra[b] = fill_holes(points.begin_of(b), points.end_of(b) - points.begin_of(b), keep,
+                          std::move(arrivals[b]), copies, compacted[b]);
+    new_begin.push_back(new_begin.back() + compacted[b] + extra[b].size());
+  }
+  // Bodies moving to lower indices go first, in order, then those moving up, in reverse:
+  // each move then writes only into slots no unmoved body still occupies.
+  for (std::size_t b = 0; b < n_bodies; ++b)
+    if (new_begin[b] <= points.begin_of(b))
+      shift_range(points.begin_of(b), new_begin[b], compacted[b], copies);
+  for (std::size_t b = n_bodies; b-- > 0;)
+    if (new_begin[b] > points.begin_of(b))
+      shift_range(points.begin_of(b), new_begin[b], compacted[b], copies);
+  for (std::size_t b = 0; b < n_bodies; ++b)
+    for (std::size_t k = 0; k < extra[b].size(); ++k)
+      copies.push_back({extra[b][k].source, extra[b][k].index, new_begin[b] + compacted[b] + k});
+
+  const std::size_t n_new = new_begin.back();
+  std::vector<std::vector<const void*>> sources(incoming.size());
+  for (std::size_t i = 0; i < incoming.size(); ++i)
+    incoming[i].for_each_array([&](const auto& values) { sources[i].push_back(&values); });
+  std::size_t k = 0;
+  points.for_each_array(
+    [&](auto& values)
+    {
+      using Values = std::decay_t<decltype(values)>;
+      values.resize(std::max(values.size(), n_new));
+      for (const ElementCopy& c : copies)
+        values[c.to] = c.source == 0
+                         ? values[c.from]
+                         : (*static_cast<const Values*>(sources[c.source - 1][k]))[c.from];
+      values.resize(n_new);
+      ++k;
+    });
+  points.body_begin = std::move(new_begin);
+}
+
 void append_points(Particles& points, const Particles& more)
 {
   if (more.size() == 0)
     return;
-  points = merge_points(points, std::vector<char>(points.size(), 1), {more});
+  exchange_in_place(points, std::vector<char>(points.size(), 1), {more});
 }
 } // namespace vulnus::mpm

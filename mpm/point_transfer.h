@@ -24,6 +24,13 @@ Particles from_bytes(const char* data, std::size_t size);
 Particles merge_points(const Particles& points, const std::vector<char>& keep,
                        const std::vector<Particles>& incoming);
 
+/// The same result as merge_points (up to the order of points within a body) without copying
+/// the container: holes left by the points not kept take incoming points or the body's last
+/// points, and bodies shift by moving at most as many points as the shift. The work is
+/// proportional to the points moved, not to the container.
+void exchange_in_place(Particles& points, const std::vector<char>& keep,
+                       const std::vector<Particles>& incoming);
+
 /// Appends the points of `more` body by body (both must have the same number of bodies).
 void append_points(Particles& points, const Particles& more);
 } // namespace vulnus::mpm

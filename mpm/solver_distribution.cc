@@ -113,7 +113,7 @@ void Solver::migrate_points(const bool to_any_rank)
     if (partners[i] != me && !incoming_bytes[i].empty())
       incoming.push_back(from_bytes(incoming_bytes[i].data(), incoming_bytes[i].size()));
   if (n_leaving > 0 || !incoming.empty())
-    particles = merge_points(particles, stays, incoming);
+    exchange_in_place(particles, stays, incoming);
   volumetric_rate.resize(particles.size(), 0.0);
 }
 

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <numeric>
 
 using namespace vulnus;
@@ -119,6 +121,80 @@ TEST(PointTransfer, SplitBytesAndMergeKeepEveryPoint)
     EXPECT_EQ(merged.energy_density[i], points.energy_density[original]);
     EXPECT_EQ(merged.mass[i], points.mass[original]);
     EXPECT_EQ(i < merged.end_of(0), original < points.end_of(0));
+  }
+}
+
+namespace
+{
+/// Bodies of the given sizes; every field of a point is a function of its id.
+mpm::Particles numbered_points(const std::vector<int>& sizes, std::uint32_t first_id)
+{
+  mpm::Particles p;
+  for (const int n : sizes)
+  {
+    p.start_body();
+    for (int i = 0; i < n; ++i)
+    {
+      const double id = first_id + p.size();
+      p.append(Vector3(id, 0, 0), Vector3(0, id, 0), id, 2 * id, Vector3::UnitZ());
+      p.id.back() = first_id + static_cast<std::uint32_t>(p.size() - 1);
+      p.energy_density.back() = 3 * id;
+    }
+    p.finish_body();
+  }
+  return p;
+}
+
+/// Ids of each body, sorted.
+std::vector<std::vector<std::uint32_t>> ids_by_body(const mpm::Particles& p)
+{
+  std::vector<std::vector<std::uint32_t>> ids(p.n_bodies());
+  for (std::size_t b = 0; b < p.n_bodies(); ++b)
+  {
+    ids[b].assign(p.id.begin() + p.begin_of(b), p.id.begin() + p.end_of(b));
+    std::sort(ids[b].begin(), ids[b].end());
+  }
+  return ids;
+}
+} // namespace
+
+// The in-place exchange against the copying merge on random removals and arrivals: bodies
+// shrinking, growing, emptying and starting empty, and every field still matching its id.
+TEST(PointTransfer, InPlaceExchangeEqualsTheCopyingMerge)
+{
+  std::srand(7);
+  auto random_sizes = [] {
+    std::vector<int> sizes(3);
+    for (int& n : sizes)
+      n = std::rand() % 4 == 0 ? 0 : std::rand() % 40;
+    return sizes;
+  };
+  for (int trial = 0; trial < 500; ++trial)
+  {
+    const mpm::Particles original = numbered_points(random_sizes(), 0);
+    std::vector<char> keep(original.size());
+    const int keep_percent = std::rand() % 101;
+    for (char& k : keep)
+      k = std::rand() % 100 < keep_percent;
+    std::vector<mpm::Particles> incoming;
+    for (int i = 0, n = std::rand() % 3; i < n; ++i)
+      incoming.push_back(numbered_points(random_sizes(), 1000 * (i + 1)));
+
+    const mpm::Particles expected = mpm::merge_points(original, keep, incoming);
+    mpm::Particles result = original;
+    mpm::exchange_in_place(result, keep, incoming);
+    ASSERT_EQ(result.body_begin, expected.body_begin) << "trial " << trial;
+    ASSERT_EQ(ids_by_body(result), ids_by_body(expected)) << "trial " << trial;
+    result.for_each_array([&](const auto& values) { ASSERT_EQ(values.size(), result.size()); });
+    for (std::size_t i = 0; i < result.size(); ++i)
+    {
+      const double id = result.id[i];
+      ASSERT_EQ(result.position[i], Vector3(id, 0, 0)) << "trial " << trial;
+      ASSERT_EQ(result.velocity[i], Vector3(0, id, 0));
+      ASSERT_EQ(result.mass[i], id);
+      ASSERT_EQ(result.reference_volume[i], 2 * id);
+      ASSERT_EQ(result.energy_density[i], 3 * id);
+    }
   }
 }
 
