@@ -10,7 +10,7 @@ ParticleSnapshot mpm_snapshot(const mpm::Solver& solver)
   ParticleSnapshot s(n);
   s.set_positions(n ? p.position[0].data() : nullptr);
   s.add_vector("velocity", n ? p.velocity[0].data() : nullptr);
-  s.add_tensor("stress", n ? p.stress[0].data() : nullptr);
+  s.add_symmetric_tensor("stress", n ? p.stress[0].data() : nullptr);
   std::vector<std::int32_t> flags(n), body(n), ids(n);
   std::vector<double> fiber(3 * n), plastic(n);
   for (std::size_t b = 0; b < p.n_bodies(); ++b)

@@ -29,17 +29,15 @@ enum FailureFlag : std::uint8_t
   total_failure = 3
 };
 
-/// History of one material point. Irreversible failure flags and, for the elastic-plastic
-/// bullet, the isochoric elastic left Cauchy-Green tensor and the equivalent plastic strain.
+/// History of one material point (64 bytes; every MPM point and FE quadrature point holds
+/// one). Irreversible failure flags and, for the elastic-plastic bullet, the plastic history.
 struct PointState
 {
   std::uint8_t failure = intact;
   double equivalent_plastic_strain = 0.0;
-  /// Isochoric elastic left Cauchy-Green tensor b_e~ in Voigt order xx yy zz xy yz xz.
-  std::array<double, 6> elastic_b_bar{{1.0, 1.0, 1.0, 0.0, 0.0, 0.0}};
-  /// Inverse isochoric plastic right Cauchy-Green tensor C_p~^{-1} (det 1), Voigt order as
-  /// above; elastic-plastic only. The trial state b_e~ = F~ C_p~^{-1} F~^T then needs no
-  /// previous F (it equals f b_e~_n f^T, f = F F_n^{-1}).
+  /// Inverse isochoric plastic right Cauchy-Green tensor C_p~^{-1} (det 1) in Voigt order xx
+  /// yy zz xy yz xz; elastic-plastic only. The trial state b_e~ = F~ C_p~^{-1} F~^T needs no
+  /// previous F (it equals f b_e~_n f^T, f = F F_n^{-1}), and b_e~ itself need not be stored.
   std::array<double, 6> inverse_plastic_cauchy_green{{1.0, 1.0, 1.0, 0.0, 0.0, 0.0}};
 };
 

@@ -128,7 +128,6 @@ void NeoHookeanPlastic::update_point(const Tensor2& F, const Vector3&, PointStat
     state.inverse_plastic_cauchy_green =
         to_voigt(F_bar_inverse * r.elastic_b_bar * F_bar_inverse.transpose());
   }
-  state.elastic_b_bar = to_voigt(r.elastic_b_bar);
   state.equivalent_plastic_strain = r.equivalent_plastic_strain;
 
   const double trace_b = r.elastic_b_bar.trace();

@@ -50,7 +50,7 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
     Tensor2 volume_stress;
     if constexpr (with_force)
       volume_stress = (particles.reference_volume[p] * particles.deformation_gradient[p].determinant()) *
-                      particles.stress[p];
+                      full_tensor(particles.stress[p]);
     for_each_node<shape>(grid, lp, particles.position[p],
                          [&](const std::int64_t key, const double w, const Vector3& grad_w) {
                            NodeBodyData& node = out[grid.slot(key) * n_bodies + b];

@@ -16,7 +16,7 @@ void Particles::append(const Vector3& x, const Vector3& v, const double m, const
   reference_position.push_back(x);
   velocity.push_back(v);
   deformation_gradient.push_back(Tensor2::Identity());
-  stress.push_back(Tensor2::Zero());
+  stress.push_back(SymmetricTensor::Zero());
   mass.push_back(m);
   reference_volume.push_back(volume);
   fiber_direction.push_back(fiber);
@@ -28,34 +28,59 @@ void Particles::append(const Vector3& x, const Vector3& v, const double m, const
 
 namespace
 {
+/// values[i] = old values[order[i]] by following the permutation's cycles: one element of
+/// scratch instead of a second copy of the array.
 template <class T>
-void apply_order(std::vector<T>& values, const std::vector<std::size_t>& order)
+void apply_order_in_place(std::vector<T>& values, const std::vector<std::uint32_t>& order,
+                          std::vector<char>& done)
 {
-  std::vector<T> reordered(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-    reordered[i] = values[order[i]];
-  values.swap(reordered);
+  done.assign(values.size(), 0);
+  for (std::size_t start = 0; start < values.size(); ++start)
+  {
+    if (done[start])
+      continue;
+    done[start] = 1;
+    if (order[start] == start)
+      continue;
+    T first = std::move(values[start]);
+    std::size_t i = start;
+    for (std::size_t next = order[i]; next != start; next = order[i])
+    {
+      values[i] = std::move(values[next]);
+      done[next] = 1;
+      i = next;
+    }
+    values[i] = std::move(first);
+  }
 }
 } // namespace
 
 void Particles::keep_only(const std::vector<char>& keep)
 {
-  std::vector<std::size_t> order;
-  order.reserve(size());
+  // Stable compaction in place: the kept points move down, body by body.
   std::vector<std::size_t> new_begin{0};
+  std::size_t kept = 0;
   for (std::size_t b = 0; b + 1 < body_begin.size(); ++b)
   {
     for (std::size_t p = body_begin[b]; p < body_begin[b + 1]; ++p)
-      if (keep[p])
-        order.push_back(p);
-    new_begin.push_back(order.size());
+      kept += keep[p] != 0;
+    new_begin.push_back(kept);
   }
-  permute(order);
+  for_each_array(
+    [&keep](auto& values)
+    {
+      std::size_t w = 0;
+      for (std::size_t p = 0; p < values.size(); ++p)
+        if (keep[p])
+          values[w++] = values[p];
+      values.resize(w);
+    });
   body_begin = new_begin;
 }
 
-void Particles::permute(const std::vector<std::size_t>& order)
+void Particles::permute(const std::vector<std::uint32_t>& order)
 {
-  for_each_array([&order](auto& values) { apply_order(values, order); });
+  std::vector<char> done;
+  for_each_array([&](auto& values) { apply_order_in_place(values, order, done); });
 }
 } // namespace vulnus::mpm

@@ -14,6 +14,25 @@ namespace vulnus::mpm
 {
 using Vector3 = Eigen::Vector3d;
 using Tensor2 = Eigen::Matrix3d;
+/// A symmetric tensor in Voigt order xx yy zz xy yz xz (48 bytes instead of 72).
+using SymmetricTensor = Eigen::Matrix<double, 6, 1>;
+
+inline SymmetricTensor symmetric_part(const Tensor2& t)
+{
+  SymmetricTensor s;
+  s << t(0, 0), t(1, 1), t(2, 2), 0.5 * (t(0, 1) + t(1, 0)), 0.5 * (t(1, 2) + t(2, 1)),
+    0.5 * (t(0, 2) + t(2, 0));
+  return s;
+}
+
+inline Tensor2 full_tensor(const SymmetricTensor& s)
+{
+  Tensor2 t;
+  t << s[0], s[3], s[5], //
+    s[3], s[1], s[4],    //
+    s[5], s[4], s[2];
+  return t;
+}
 
 struct Particles
 {
@@ -21,7 +40,7 @@ struct Particles
   std::vector<Vector3> reference_position; ///< where the point started (wound maps)
   std::vector<Vector3> velocity;
   std::vector<Tensor2> deformation_gradient;
-  std::vector<Tensor2> stress; ///< Cauchy stress, Pa
+  std::vector<SymmetricTensor> stress; ///< Cauchy stress, Pa
   std::vector<double> mass;
   std::vector<double> reference_volume;
   std::vector<Vector3> fiber_direction; ///< reference unit fiber a0 (bodies with fibers)
@@ -51,8 +70,9 @@ struct Particles
   /// Removes the points whose keep flag is 0, preserving order and body ranges.
   void keep_only(const std::vector<char>& keep);
 
-  /// Reorders every array by `order` (new index i takes old index order[i]).
-  void permute(const std::vector<std::size_t>& order);
+  /// Reorders every array by `order` (new index i takes old index order[i]) in place: 1 byte
+  /// of scratch per point instead of a copy of the largest array.
+  void permute(const std::vector<std::uint32_t>& order);
 
   /// Calls f on each per-point array (not body_begin), always in the same order.
   template <class F>

@@ -249,21 +249,23 @@ bool Solver::finished() const
 
 void Solver::sort_points()
 {
+  // 32-bit keys and order: 8 bytes of scratch per point (a rank holds fewer than 2^32 points
+  // and the padded grid fewer than 2^32 cells, which the grid's limit of 2^31 nodes ensures).
   const auto& n = grid.cells();
-  std::vector<std::int64_t> cell_key(particles.size());
-  std::vector<std::size_t> order(particles.size());
+  std::vector<std::uint32_t> cell_key(particles.size());
+  std::vector<std::uint32_t> order(particles.size());
   for (std::size_t p = 0; p < particles.size(); ++p)
   {
     const Vector3 s = grid.to_cell_units(particles.position[p]);
     const std::int64_t i = static_cast<std::int64_t>(std::floor(s[0])) + 2;
     const std::int64_t j = static_cast<std::int64_t>(std::floor(s[1])) + 2;
     const std::int64_t k = static_cast<std::int64_t>(std::floor(s[2])) + 2;
-    cell_key[p] = i + (n[0] + 5) * (j + (n[1] + 5) * k);
-    order[p] = p;
+    cell_key[p] = static_cast<std::uint32_t>(i + (n[0] + 5) * (j + (n[1] + 5) * k));
+    order[p] = static_cast<std::uint32_t>(p);
   }
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
     std::stable_sort(order.begin() + particles.begin_of(b), order.begin() + particles.end_of(b),
-                     [&](std::size_t a, std::size_t c) { return cell_key[a] < cell_key[c]; });
+                     [&](std::uint32_t a, std::uint32_t c) { return cell_key[a] < cell_key[c]; });
   particles.permute(order);
 }
 

@@ -13,7 +13,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '2'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '3'};
 } // namespace
 
 void Solver::save(std::ostream& out) const

@@ -56,7 +56,7 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
         viscous += viscous_density * particles.reference_volume[p];
         wave_speed += std::sqrt(q / current_density);
       }
-      particles.stress[p] = sigma;
+      particles.stress[p] = symmetric_part(sigma);
       particles.energy_density[p] = r.energy_density;
       particles.dissipated_density[p] += dissipated;
       particles.wave_speed[p] = wave_speed;

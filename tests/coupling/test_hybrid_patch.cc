@@ -80,7 +80,7 @@ PatchErrors run_patch(const CouplingScheme scheme, const Eigen::Matrix3d& L)
     {
       e.stress_scale = std::max(e.stress_scale, std::abs(fe_stress[a][b]));
       for (std::size_t i = 0; i < p.size(); ++i)
-        e.stress = std::max(e.stress, std::abs(p.stress[i](a, b) - fe_stress[a][b]));
+        e.stress = std::max(e.stress, std::abs(mpm::full_tensor(p.stress[i])(a, b) - fe_stress[a][b]));
     }
   e.stress = dealii::Utilities::MPI::max(e.stress, solver.fe().communicator());
   return e;
