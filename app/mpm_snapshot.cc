@@ -8,9 +8,10 @@ ParticleSnapshot mpm_snapshot(const mpm::Solver& solver)
   const mpm::Particles& p = solver.points();
   const std::size_t n = p.size();
   ParticleSnapshot s(n);
-  s.set_positions(n ? p.position[0].data() : nullptr);
-  s.add_vector("velocity", n ? p.velocity[0].data() : nullptr);
-  s.add_symmetric_tensor("stress", n ? p.stress[0].data() : nullptr);
+  // The solver's arrays are borrowed, not copied: the snapshot is written before the next step.
+  s.borrow_positions(n ? p.position[0].data() : nullptr);
+  s.borrow_vector("velocity", n ? p.velocity[0].data() : nullptr);
+  s.borrow_symmetric_tensor("stress", n ? p.stress[0].data() : nullptr);
   std::vector<std::int32_t> flags(n), body(n), ids(n);
   std::vector<double> fiber(3 * n), plastic(n);
   for (std::size_t b = 0; b < p.n_bodies(); ++b)
@@ -35,7 +36,7 @@ ParticleSnapshot mpm_snapshot(const mpm::Solver& solver)
   s.add_integer("material_id", body.data());
   s.add_integer("id", ids.data());
   s.add_scalar("equivalent_plastic_strain", plastic.data());
-  s.add_vector("reference_position", n ? p.reference_position[0].data() : nullptr);
+  s.borrow_vector("reference_position", n ? p.reference_position[0].data() : nullptr);
   return s;
 }
 } // namespace vulnus::app

@@ -7,6 +7,8 @@
 namespace vulnus::app
 {
 /// Positions, velocity, stress, failure flag, fiber direction (current, F a0 normalized),
-/// material id (body index), equivalent plastic strain, id, reference position.
+/// material id (body index), equivalent plastic strain, id, reference position (stress as
+/// Tensor6). Position, velocity, stress and reference position are borrowed from the solver,
+/// not copied: write the snapshot before the solver steps again.
 ParticleSnapshot mpm_snapshot(const mpm::Solver& solver);
 } // namespace vulnus::app

@@ -27,6 +27,8 @@ unsigned int n_components(const ParticleSnapshot::FieldKind kind)
     return 3;
   case ParticleSnapshot::FieldKind::tensor:
     return 9;
+  case ParticleSnapshot::FieldKind::symmetric_tensor:
+    return 6;
   default:
     return 1;
   }
@@ -112,14 +114,22 @@ std::string data_item(const std::string& file, const std::string& dataset, const
 }
 } // namespace
 
-ParticleSnapshot::ParticleSnapshot(const std::size_t n_particles)
-    : n(n_particles), position_values(3 * n_particles, 0.0)
-{
-}
+ParticleSnapshot::ParticleSnapshot(const std::size_t n_particles) : n(n_particles) {}
 
 void ParticleSnapshot::set_positions(const double* xyz)
 {
   position_values.assign(xyz, xyz + 3 * n);
+  borrowed_positions = nullptr;
+}
+
+void ParticleSnapshot::borrow_vector(const std::string& name, const double* values)
+{
+  new_field(name, FieldKind::vector).borrowed = values;
+}
+
+void ParticleSnapshot::borrow_symmetric_tensor(const std::string& name, const double* voigt)
+{
+  new_field(name, FieldKind::symmetric_tensor).borrowed = voigt;
 }
 
 ParticleSnapshot::Field& ParticleSnapshot::new_field(const std::string& name, const FieldKind kind)
@@ -130,7 +140,7 @@ ParticleSnapshot::Field& ParticleSnapshot::new_field(const std::string& name, co
   for (const Field& field : field_list)
     if (field.name == name)
       throw std::invalid_argument("particle field '" + name + "' added twice");
-  field_list.push_back(Field{name, kind, {}, {}});
+  field_list.push_back(Field{name, kind, {}, {}, nullptr});
   return field_list.back();
 }
 
@@ -194,13 +204,15 @@ void write_particle_hdf5(const std::string& path, const double time,
   const std::size_t n = snapshot.n_particles();
   RowRange rows{parallel ? first_row : 0, n, parallel ? total_rows : n,
                 parallel ? hid_t(transfer) : H5P_DEFAULT};
-  write_dataset(file, "positions", rows, 3, H5T_NATIVE_DOUBLE, snapshot.positions().data());
+  const std::vector<double> origin(n > 0 && !snapshot.positions() ? 3 * n : 0, 0.0);
+  write_dataset(file, "positions", rows, 3, H5T_NATIVE_DOUBLE,
+                snapshot.positions() ? snapshot.positions() : origin.data());
   for (const ParticleSnapshot::Field& field : snapshot.fields())
     if (field.kind == ParticleSnapshot::FieldKind::integer)
       write_dataset(file, field.name, rows, 1, H5T_NATIVE_INT32, field.integers.data());
     else
       write_dataset(file, field.name, rows, n_components(field.kind), H5T_NATIVE_DOUBLE,
-                    field.values.data());
+                    field.data());
   check(H5Fflush(file, H5F_SCOPE_LOCAL), "flush '" + path + "'");
 }
 
@@ -298,7 +310,7 @@ void ParticleOutput::restore_records(std::istream& in)
     for (FieldRecord& field : record.fields)
     {
       int kind = 0;
-      if (!(in >> kind) || kind < 0 || kind > 3)
+      if (!(in >> kind) || kind < 0 || kind > 4)
         fail();
       field.kind = static_cast<ParticleSnapshot::FieldKind>(kind);
       read_name(field.name);
@@ -337,9 +349,11 @@ void ParticleOutput::write_xdmf() const
               << "        </Geometry>\n";
           for (const FieldRecord& field : record.fields)
           {
-            const char* type = field.kind == ParticleSnapshot::FieldKind::vector   ? "Vector"
-                               : field.kind == ParticleSnapshot::FieldKind::tensor ? "Tensor"
-                                                                                   : "Scalar";
+            const char* type =
+              field.kind == ParticleSnapshot::FieldKind::vector             ? "Vector"
+              : field.kind == ParticleSnapshot::FieldKind::tensor           ? "Tensor"
+              : field.kind == ParticleSnapshot::FieldKind::symmetric_tensor ? "Tensor6"
+                                                                            : "Scalar";
             out << "        <Attribute Name=\"" << field.name << "\" AttributeType=\"" << type
                 << "\" Center=\"Node\">\n"
                 << "          "

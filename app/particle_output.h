@@ -22,16 +22,19 @@ public:
   {
     scalar, ///< n values, double
     vector, ///< n x 3, double
-    tensor, ///< n x 9, double, row-major (symmetric tensors are stored expanded)
-    integer ///< n values, int32 (failure flag, material id)
+    tensor, ///< n x 9, double, row-major (add_symmetric_tensor stores expanded)
+    integer, ///< n values, int32 (failure flag, material id)
+    symmetric_tensor ///< n x 6, double, Voigt order xx yy zz xy yz xz (XDMF Tensor6)
   };
 
   struct Field
   {
     std::string name;
     FieldKind kind;
-    std::vector<double> values;         ///< scalar, vector, tensor
+    std::vector<double> values;         ///< scalar, vector, tensor (copied in)
     std::vector<std::int32_t> integers; ///< integer
+    const double* borrowed = nullptr;   ///< instead of values, for borrow_* fields
+    const double* data() const { return borrowed ? borrowed : values.data(); }
   };
 
   explicit ParticleSnapshot(std::size_t n_particles);
@@ -41,6 +44,12 @@ public:
   /// n x 3 coordinates, interleaved x y z (an array of Eigen::Vector3d can be passed as
   /// `positions[0].data()`).
   void set_positions(const double* xyz);
+  /// The borrow_* calls keep a pointer instead of a copy (no memory per point for output):
+  /// the array must stay unchanged until the snapshot is written.
+  void borrow_positions(const double* xyz) { borrowed_positions = xyz; }
+  void borrow_vector(const std::string& name, const double* values);
+  /// n x 6 in Voigt order xx yy zz xy yz xz, stored as 6 components (XDMF Tensor6).
+  void borrow_symmetric_tensor(const std::string& name, const double* voigt);
   void add_scalar(const std::string& name, const double* values);
   /// n x 3, interleaved.
   void add_vector(const std::string& name, const double* values);
@@ -59,7 +68,13 @@ public:
     add_integer(name, converted.data());
   }
 
-  const std::vector<double>& positions() const { return position_values; }
+  /// n x 3, interleaved; null until set (written as zeros).
+  const double* positions() const
+  {
+    if (borrowed_positions)
+      return borrowed_positions;
+    return position_values.empty() ? nullptr : position_values.data();
+  }
   const std::vector<Field>& fields() const { return field_list; }
 
 private:
@@ -67,6 +82,7 @@ private:
 
   std::size_t n;
   std::vector<double> position_values;
+  const double* borrowed_positions = nullptr;
   std::vector<Field> field_list;
 };
 

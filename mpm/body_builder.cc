@@ -65,34 +65,49 @@ void body_bounding_box(const BodyParameters& body, Vector3& lower, Vector3& uppe
   }
 }
 
+namespace
+{
+/// Calls f(x) for each lattice point of `body` (n per cell and axis, at sub-cell centres).
+template <class F> void for_each_point_of(const BodyParameters& body, const Grid& grid, F&& f)
+{
+  const double spacing = grid.cell_size() / body.particles_per_cell;
+  Vector3 lower = Vector3::Zero(), upper = Vector3::Zero();
+  body_bounding_box(body, lower, upper);
+  std::array<long, 3> first, last;
+  for (int d = 0; d < 3; ++d)
+  {
+    first[d] = static_cast<long>(std::floor((lower[d] - grid.origin()[d]) / spacing));
+    last[d] = static_cast<long>(std::ceil((upper[d] - grid.origin()[d]) / spacing));
+  }
+  for (long k = first[2]; k <= last[2]; ++k)
+    for (long j = first[1]; j <= last[1]; ++j)
+      for (long i = first[0]; i <= last[0]; ++i)
+      {
+        const Vector3 x = grid.origin() + spacing * Vector3(i + 0.5, j + 0.5, k + 0.5);
+        if (body_contains(body, x))
+          f(x);
+      }
+}
+} // namespace
+
 void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles)
 {
-  const double h = grid.cell_size();
+  // Counted first so that every array is allocated once (growing them by doubling would
+  // leave the old copies in the resident set).
+  std::size_t total = particles.size();
+  for (const BodyParameters& body : scene.bodies)
+    for_each_point_of(body, grid, [&total](const Vector3&) { ++total; });
+  particles.reserve(total);
   for (const BodyParameters& body : scene.bodies)
   {
     particles.start_body();
-    const unsigned int n = body.particles_per_cell;
-    const double spacing = h / n;
+    const double spacing = grid.cell_size() / body.particles_per_cell;
     const double volume = spacing * spacing * spacing;
-    Vector3 lower = Vector3::Zero(), upper = Vector3::Zero();
-    body_bounding_box(body, lower, upper);
-    std::array<long, 3> first, last;
-    for (int d = 0; d < 3; ++d)
-    {
-      first[d] = static_cast<long>(std::floor((lower[d] - grid.origin()[d]) / spacing));
-      last[d] = static_cast<long>(std::ceil((upper[d] - grid.origin()[d]) / spacing));
-    }
     const std::size_t n_before = particles.size();
-    for (long k = first[2]; k <= last[2]; ++k)
-      for (long j = first[1]; j <= last[1]; ++j)
-        for (long i = first[0]; i <= last[0]; ++i)
-        {
-          const Vector3 x = grid.origin() + spacing * Vector3(i + 0.5, j + 0.5, k + 0.5);
-          if (!body_contains(body, x))
-            continue;
-          const Vector3 fiber = materials::fiber_direction(body.fibers, x);
-          particles.append(x, body.initial_velocity, body.density * volume, volume, fiber);
-        }
+    for_each_point_of(body, grid, [&](const Vector3& x) {
+      particles.append(x, body.initial_velocity, body.density * volume, volume,
+                       materials::fiber_direction(body.fibers, x));
+    });
     particles.finish_body();
     if (particles.size() == n_before)
       throw std::invalid_argument("Body " + body.name +

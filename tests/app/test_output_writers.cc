@@ -44,6 +44,34 @@ void expect_no_temporaries(const fs::path& directory)
     EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
 }
 
+// Borrowed arrays are written as they are when write() runs; a symmetric tensor borrowed in
+// Voigt order is stored as 6 components and announced to ParaView as Tensor6.
+TEST(ParticleOutput, BorrowedArraysAndTensor6)
+{
+  ScratchDirectory scratch("particles_borrowed");
+  const std::vector<double> x = {0, 0, 0, 1, 2, 3};
+  std::vector<double> v = {1, 0, 0, 0, 1, 0};
+  const std::vector<double> voigt = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+  ParticleSnapshot snapshot(2);
+  snapshot.borrow_positions(x.data());
+  snapshot.borrow_vector("velocity", v.data());
+  snapshot.borrow_symmetric_tensor("stress", voigt.data());
+  v[4] = 42.0; // borrowed, not copied
+  ParticleOutput output(scratch.path.string());
+  const std::string path = output.write(1e-6, snapshot);
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  std::vector<hsize_t> dims;
+  EXPECT_EQ(read_doubles(file, "positions", dims), x);
+  EXPECT_EQ(read_doubles(file, "velocity", dims)[4], 42.0);
+  EXPECT_EQ(read_doubles(file, "stress", dims), voigt);
+  EXPECT_EQ(dims, (std::vector<hsize_t>{2, 6}));
+  H5Fclose(file);
+  const std::string xdmf = read_text(output.xdmf_path());
+  EXPECT_NE(xdmf.find("Name=\"stress\" AttributeType=\"Tensor6\""), std::string::npos) << xdmf;
+  EXPECT_NE(xdmf.find("Dimensions=\"2 6\""), std::string::npos) << xdmf;
+}
+
 TEST(ParticleOutput, RoundTripThroughHdf5AndXdmfNamesDatasets)
 {
   ScratchDirectory scratch("particles");
