@@ -165,14 +165,12 @@ int run_hybrid_scene(const RunParameters& parameters, RunDirectory& directory)
   for (const std::string& w : totals.warnings)
     directory.warn(w);
 
-  // One process: the solver's own points (a copy would add ~400 B per point to the peak).
-  const mpm::Particles gathered = ranks.distributed() ? mpm_side.gather_points() : mpm::Particles{};
-  const mpm::Particles& all_points = ranks.distributed() ? gathered : mpm_side.points();
+  const WoundSample wound = collect_wound_sample(mpm_side); // failed points only, on rank 0
   const mpm::SceneDiagnostics m = mpm_side.diagnostics();
   totals.mpi_bytes_sent = ranks.sum(ranks.bytes_sent());
   if (!directory.writes_files())
     return totals.completed ? 0 : 1;
-  nlohmann::json summary = mpm_summary(mpm_side, totals, all_points, m);
+  nlohmann::json summary = mpm_summary(mpm_side, totals, wound, m);
   const double energy = hybrid_scene_energy(solver, m, fe);
   const coupling::InterfaceLedger& ledger = solver.ledger();
   summary["method"] = "hybrid";

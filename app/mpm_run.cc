@@ -199,14 +199,12 @@ int run_mpm_scene(const RunParameters& parameters, RunDirectory& directory,
   for (const std::string& w : totals.warnings)
     directory.warn(w);
 
-  // One process: the solver's own points (a copy would add ~400 B per point to the peak).
-  const mpm::Particles gathered = ranks.distributed() ? solver.gather_points() : mpm::Particles{};
-  const mpm::Particles& all_points = ranks.distributed() ? gathered : solver.points();
+  const WoundSample wound = collect_wound_sample(solver); // failed points only, on rank 0
   const mpm::SceneDiagnostics final_state = solver.diagnostics();
   totals.mpi_bytes_sent = ranks.sum(ranks.bytes_sent());
   if (!directory.writes_files())
     return totals.completed ? 0 : 1;
-  const nlohmann::json summary = mpm_summary(solver, totals, all_points, final_state);
+  const nlohmann::json summary = mpm_summary(solver, totals, wound, final_state);
   write_summary_json(directory.file("summary.json"), summary);
 
   const mpm::PhaseTimes& t = solver.phase_times();

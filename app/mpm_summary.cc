@@ -27,47 +27,24 @@ nlohmann::json face_json(const mpm::FaceWound& w)
 } // namespace
 
 nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
-                           const mpm::Particles& p, const mpm::SceneDiagnostics& d)
+                           const WoundSample& sample, const mpm::SceneDiagnostics& d)
 {
   const mpm::Vector3 axis = solver.flight_direction();
   const int projectile = solver.projectile();
-
-  // The target: every deformable body other than the projectile.
-  std::vector<mpm::Vector3> x;
-  std::vector<double> volume;
-  std::vector<std::uint8_t> flags;
-  double entrance = std::numeric_limits<double>::max(), exit = -entrance;
-  for (std::size_t b = 0; b < p.n_bodies(); ++b)
-  {
-    if (static_cast<int>(b) == projectile || solver.body_material(b).is_rigid())
-      continue;
-    const double half_spacing = 0.5 * solver.scene().cell_size / solver.scene().bodies[b].particles_per_cell;
-    for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
-    {
-      x.push_back(p.reference_position[i]);
-      volume.push_back(p.reference_volume[i]);
-      flags.push_back(p.state[i].failure);
-      const double along = p.reference_position[i].dot(axis);
-      entrance = std::min(entrance, along - half_spacing);
-      exit = std::max(exit, along + half_spacing);
-    }
-  }
-  const mpm::WoundMetrics wound =
-    x.empty() ? mpm::WoundMetrics()
-              : mpm::compute_wound_metrics(x, volume, flags, axis, entrance, exit, solver.scene().cell_size);
+  const mpm::WoundMetrics wound = wound_metrics_of(sample, solver);
 
   nlohmann::json j;
   j["completed"] = totals.completed;
   if (!totals.completed)
     j["error"] = totals.error;
-  j["particles"] = p.size();
+  j["particles"] = sample.n_points;
   j["mpi"] = {{"ranks", solver.rank_group().size()}, {"bytes_sent", totals.mpi_bytes_sent}};
   j["fe_cells"] = 0;
   j["steps"] = solver.step_count();
   j["time_s"] = solver.time();
   j["wall_seconds"] = totals.wall_seconds;
   j["particle_steps_per_second"] =
-    totals.wall_seconds > 0 ? double(p.size()) * solver.step_count() / totals.wall_seconds : 0.0;
+    totals.wall_seconds > 0 ? double(sample.n_points) * solver.step_count() / totals.wall_seconds : 0.0;
   j["failed"] = {{"matrix", wound.counts[1]}, {"fiber", wound.counts[2]}, {"total", wound.counts[3]}};
   j["failed_volume_m3"] = {{"matrix", wound.volumes[1]}, {"fiber", wound.volumes[2]}, {"total", wound.volumes[3]}};
   j["entrance_wound"] = face_json(wound.entrance);

@@ -2,6 +2,7 @@
 // kinematics and the energy budget (keys listed in the wound-analysis issue and the README).
 #pragma once
 
+#include "app/wound_sample.h"
 #include "mpm/solver.h"
 
 #include <nlohmann/json.hpp>
@@ -22,8 +23,8 @@ struct RunTotals
   std::uint64_t mpi_bytes_sent = 0; ///< over all ranks
 };
 
-/// `points`: every point of the scene (Solver::gather_points on rank 0 of a distributed run),
-/// `d`: the diagnostics over all ranks.
+/// `sample`: the target's failed points and intact totals over all ranks
+/// (collect_wound_sample, complete on rank 0), `d`: the diagnostics over all ranks.
 nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
-                           const mpm::Particles& points, const mpm::SceneDiagnostics& d);
+                           const WoundSample& sample, const mpm::SceneDiagnostics& d);
 } // namespace vulnus::app

@@ -90,26 +90,38 @@ template <class F> void for_each_point_of(const BodyParameters& body, const Grid
 }
 } // namespace
 
-void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles)
+void visit_body_points(const SceneParameters& scene, const Grid& grid,
+                       const std::function<void(const Vector3&)>& visit)
+{
+  for (const BodyParameters& body : scene.bodies)
+    for_each_point_of(body, grid, visit);
+}
+
+void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles,
+                  const std::function<bool(const Vector3&)>& keep)
 {
   // Counted first so that every array is allocated once (growing them by doubling would
   // leave the old copies in the resident set).
-  std::size_t total = particles.size();
-  for (const BodyParameters& body : scene.bodies)
-    for_each_point_of(body, grid, [&total](const Vector3&) { ++total; });
-  particles.reserve(total);
+  std::size_t n_stored = particles.size();
+  visit_body_points(scene, grid, [&](const Vector3& x) { n_stored += !keep || keep(x); });
+  particles.reserve(n_stored);
+  std::uint32_t next_id = 0;
   for (const BodyParameters& body : scene.bodies)
   {
     particles.start_body();
     const double spacing = grid.cell_size() / body.particles_per_cell;
     const double volume = spacing * spacing * spacing;
-    const std::size_t n_before = particles.size();
+    const std::uint32_t first_id = next_id;
     for_each_point_of(body, grid, [&](const Vector3& x) {
+      const std::uint32_t id = next_id++;
+      if (keep && !keep(x))
+        return;
       particles.append(x, body.initial_velocity, body.density * volume, volume,
                        materials::fiber_direction(body.fibers, x));
+      particles.id.back() = id;
     });
     particles.finish_body();
-    if (particles.size() == n_before)
+    if (next_id == first_id)
       throw std::invalid_argument("Body " + body.name +
                                   ": contains no material point; make it larger than a "
                                   "point spacing (cell size / particles per cell)");

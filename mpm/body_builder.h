@@ -6,6 +6,8 @@
 #include "mpm/particles.h"
 #include "mpm/scene_parameters.h"
 
+#include <functional>
+
 namespace vulnus::mpm
 {
 /// True when x lies inside the body's shape.
@@ -17,5 +19,12 @@ void body_bounding_box(const BodyParameters& body, Vector3& lower, Vector3& uppe
 /// Appends the points of every body, one body after another, to `particles`. Points sit at
 /// the centres of the n^3 sub-cells of every grid cell whose sub-cell centre is inside the
 /// shape. Throws std::invalid_argument when a body has no point (smaller than a sub-cell).
-void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles);
+/// With `keep`, only the points where keep(x) holds are stored (one rank's slab); a point's
+/// id is its index among all points either way.
+void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles,
+                  const std::function<bool(const Vector3&)>& keep = {});
+
+/// Calls visit(x) for every point build_bodies creates, in the same order, storing nothing.
+void visit_body_points(const SceneParameters& scene, const Grid& grid,
+                       const std::function<void(const Vector3&)>& visit);
 } // namespace vulnus::mpm

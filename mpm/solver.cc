@@ -36,7 +36,14 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
     materials_of_body.push_back(owned_materials[it - material_names.begin()].get());
   }
 
-  build_bodies(scene, grid, particles);
+  // A distributed run cuts the slabs from the points' positions first, then each rank builds
+  // only the points of its own slab.
+  plan_slabs();
+  if (ranks.distributed())
+    build_bodies(scene, grid, particles, [this](const Vector3& x)
+                 { return partition.rank_of_position(grid, x) == ranks.rank(); });
+  else
+    build_bodies(scene, grid, particles);
 
   transfer.shape = scene.shape_function;
   for (const BodyParameters& body : scene.bodies)
@@ -48,6 +55,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   for (std::size_t b = 0; b < n_bodies; ++b)
     for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
       body_mass[b] += particles.mass[p];
+  ranks.sum(body_mass.data(), static_cast<int>(n_bodies));
 
   grid_settings.faces = scene.domain_faces;
   grid_settings.gravity = scene.gravity;
@@ -85,9 +93,8 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
       if (static_cast<int>(b) != projectile_body)
         for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
           exit_plane = std::max(exit_plane, particles.position[p].dot(flight_axis));
+    exit_plane = ranks.max(exit_plane);
   }
-
-  distribute_points();
 
   // Initial stresses and wave speeds (non-zero when a body starts deformed is not supported:
   // F = I, so this gives the small-strain moduli for the first CFL step).

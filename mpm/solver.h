@@ -144,7 +144,7 @@ private:
   void impose_shared_velocities();
   void check_state() const;
   std::string state_problem() const;
-  void distribute_points();
+  void plan_slabs();
   void rebalance_slabs();
   void migrate_points(bool to_any_rank);
   void sum_node_data_with_neighbours();

@@ -4,6 +4,7 @@
 // reductions of diagnostics, contact results and errors over all ranks.
 #include "mpm/solver.h"
 
+#include "mpm/body_builder.h"
 #include "mpm/point_transfer.h"
 
 #include <algorithm>
@@ -14,41 +15,47 @@ namespace vulnus::mpm
 {
 namespace
 {
-/// Points per cell layer along `axis` (points outside the grid count to the end layers).
+/// Cell layer of x along `axis`, points outside the grid counted to the end layers; -1 for
+/// NaN.
+long layer_along(const Grid& grid, const Vector3& x, const int axis)
+{
+  const double layer = std::clamp(std::floor((x[axis] - grid.origin()[axis]) * grid.inverse_cell_size()),
+                                  0.0, double(grid.cells()[axis] - 1));
+  return std::isfinite(layer) ? static_cast<long>(layer) : -1;
+}
+
+/// Points per cell layer along `axis`.
 std::vector<std::uint64_t> layer_histogram(const Particles& particles, const Grid& grid,
                                            const int axis)
 {
-  const int n_layers = grid.cells()[axis];
-  std::vector<std::uint64_t> counts(n_layers, 0);
+  std::vector<std::uint64_t> counts(grid.cells()[axis], 0);
   for (const Vector3& x : particles.position)
-  {
-    const double layer = std::clamp(
-      std::floor((x[axis] - grid.origin()[axis]) * grid.inverse_cell_size()), 0.0, double(n_layers - 1));
-    if (std::isfinite(layer))
-      ++counts[static_cast<std::size_t>(layer)];
-  }
+    if (const long layer = layer_along(grid, x, axis); layer >= 0)
+      ++counts[layer];
   return counts;
 }
 } // namespace
 
-void Solver::distribute_points()
+void Solver::plan_slabs()
 {
   partition = SlabPartition(0);
   if (!ranks.distributed())
     return;
-  // Every rank built every point, so the histograms agree without communication.
+  // Every rank visits every point position of the scene (nothing stored), so the histograms
+  // agree without communication.
   std::vector<std::vector<std::uint64_t>> counts;
   for (int a = 0; a < 3; ++a)
-    counts.push_back(layer_histogram(particles, grid, a));
+    counts.emplace_back(grid.cells()[a], 0);
+  visit_body_points(parameters, grid, [&](const Vector3& x) {
+    for (int a = 0; a < 3; ++a)
+      if (const long layer = layer_along(grid, x, a); layer >= 0)
+        ++counts[a][layer];
+  });
   const int axis = choose_slab_axis(counts);
   partition = SlabPartition::balanced(axis, counts[axis], ranks.size());
   // Contact sums count a node shared by two slabs once: on the lower of the two ranks.
   grid_settings.owns_node = [this](const std::int64_t key)
   { return !node_shared_with_lower_rank[grid.slot(key)]; };
-  std::vector<char> mine(particles.size());
-  for (std::size_t p = 0; p < particles.size(); ++p)
-    mine[p] = partition.rank_of_position(grid, particles.position[p]) == ranks.rank();
-  particles.keep_only(mine);
 }
 
 void Solver::rebalance_slabs()
