@@ -4,10 +4,6 @@
 #include "app/mpm_history.h"
 #include "mpm/wound_metrics.h"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
-
 namespace vulnus::app
 {
 namespace

@@ -1,6 +1,7 @@
 // Collects the target's failed points and intact totals over the ranks for the wound metrics.
 #include "app/wound_sample.h"
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 
@@ -27,7 +28,7 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
   const mpm::Vector3 axis = solver.flight_direction();
   const int projectile = solver.projectile();
   WoundSample sample;
-  double extent[2] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  double entrance = std::numeric_limits<double>::max(), exit = -entrance;
   std::vector<char> failed;
   for (std::size_t b = 0; b < p.n_bodies(); ++b)
   {
@@ -40,8 +41,8 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
     for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
     {
       const double along = p.reference_position[i].dot(axis);
-      extent[0] = std::min(extent[0], along - half_spacing);
-      extent[1] = std::min(extent[1], -(along + half_spacing));
+      entrance = std::min(entrance, along - half_spacing);
+      exit = std::max(exit, along + half_spacing);
       const std::uint8_t flag = p.state[i].failure;
       if (flag == 0)
       {
@@ -53,10 +54,8 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
     }
   }
   const mpm::RankGroup& ranks = solver.rank_group();
-  extent[0] = ranks.min(extent[0]);
-  extent[1] = ranks.min(extent[1]);
-  sample.entrance = extent[0];
-  sample.exit = -extent[1];
+  sample.entrance = ranks.min(entrance);
+  sample.exit = ranks.max(exit);
   sample.n_intact = ranks.sum(sample.n_intact);
   ranks.sum(&sample.intact_volume, 1);
   sample.n_points = ranks.sum(static_cast<std::uint64_t>(p.size()));
