@@ -1,41 +1,54 @@
 // Snapshot of the MPM points for output.
 #include "app/mpm_snapshot.h"
 
+#include <algorithm>
+
 namespace vulnus::app
 {
 ParticleSnapshot mpm_snapshot(const mpm::Solver& solver)
 {
+  using Kind = ParticleSnapshot::FieldKind;
   const mpm::Particles& p = solver.points();
   const std::size_t n = p.size();
   ParticleSnapshot s(n);
-  // The solver's arrays are borrowed, not copied: the snapshot is written before the next step.
+  // Arrays are borrowed and derived fields computed while writing (no memory per point): the
+  // snapshot is written before the solver steps again.
   s.borrow_positions(n ? p.position[0].data() : nullptr);
   s.borrow_vector("velocity", n ? p.velocity[0].data() : nullptr);
   s.borrow_symmetric_tensor("stress", n ? p.stress[0].data() : nullptr);
-  std::vector<std::int32_t> flags(n), body(n), ids(n);
-  std::vector<double> fiber(3 * n), plastic(n);
-  for (std::size_t b = 0; b < p.n_bodies(); ++b)
-    for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
-    {
-      body[i] = static_cast<std::int32_t>(b);
-      flags[i] = p.state[i].failure;
-      ids[i] = static_cast<std::int32_t>(p.id[i]);
-      plastic[i] = p.state[i].equivalent_plastic_strain;
-      mpm::Vector3 a = mpm::Vector3::Zero();
-      if (solver.body_material(b).uses_fibers())
-      {
-        a = p.deformation_gradient[i] * p.fiber_direction[i];
-        const double norm = a.norm();
-        a = norm > 0 ? mpm::Vector3(a / norm) : mpm::Vector3::Zero();
-      }
-      for (int d = 0; d < 3; ++d)
-        fiber[3 * i + d] = a[d];
-    }
-  s.add_integer("failure", flags.data());
-  s.add_vector("fiber_direction", fiber.data());
-  s.add_integer("material_id", body.data());
-  s.add_integer("id", ids.data());
-  s.add_scalar("equivalent_plastic_strain", plastic.data());
+  s.compute("failure", Kind::integer, [&p](std::size_t first, std::size_t count, void* out) {
+    auto* flags = static_cast<std::int32_t*>(out);
+    for (std::size_t i = 0; i < count; ++i)
+      flags[i] = p.state[first + i].failure;
+  });
+  s.compute("fiber_direction", Kind::vector,
+            [&p, &solver](std::size_t first, std::size_t count, void* out) {
+              auto* fiber = static_cast<double*>(out);
+              for (std::size_t i = 0; i < count; ++i)
+              {
+                const std::size_t k = first + i;
+                mpm::Vector3 a = mpm::Vector3::Zero();
+                if (solver.body_material(p.body_of(k)).uses_fibers())
+                {
+                  a = p.deformation_gradient[k] * p.fiber_direction[k];
+                  const double norm = a.norm();
+                  a = norm > 0 ? mpm::Vector3(a / norm) : mpm::Vector3::Zero();
+                }
+                std::copy(a.data(), a.data() + 3, fiber + 3 * i);
+              }
+            });
+  s.compute("material_id", Kind::integer, [&p](std::size_t first, std::size_t count, void* out) {
+    auto* body = static_cast<std::int32_t*>(out);
+    for (std::size_t i = 0; i < count; ++i)
+      body[i] = static_cast<std::int32_t>(p.body_of(first + i));
+  });
+  s.borrow_integer("id", n ? p.id.data() : nullptr);
+  s.compute("equivalent_plastic_strain", Kind::scalar,
+            [&p](std::size_t first, std::size_t count, void* out) {
+              auto* plastic = static_cast<double*>(out);
+              for (std::size_t i = 0; i < count; ++i)
+                plastic[i] = p.state[first + i].equivalent_plastic_strain;
+            });
   s.borrow_vector("reference_position", n ? p.reference_position[0].data() : nullptr);
   return s;
 }

@@ -5,6 +5,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -71,31 +72,82 @@ struct RowRange
   hid_t transfer = H5P_DEFAULT; ///< collective MPI-IO transfer in parallel files
 };
 
-void write_dataset(const hid_t file, const std::string& name, const RowRange& rows,
-                   const unsigned int n_columns, const hid_t type, const void* data)
+hid_t memory_type(const ParticleSnapshot::Element element)
+{
+  switch (element)
+  {
+  case ParticleSnapshot::Element::float32:
+    return H5T_NATIVE_FLOAT;
+  case ParticleSnapshot::Element::uint8:
+    return H5T_NATIVE_UINT8;
+  case ParticleSnapshot::Element::uint32:
+    return H5T_NATIVE_UINT32;
+  case ParticleSnapshot::Element::int32:
+    return H5T_NATIVE_INT32;
+  default:
+    return H5T_NATIVE_DOUBLE;
+  }
+}
+
+/// Writes rows [first, first + count) of this process's part of a dataset (count may be 0:
+/// collective writes need every rank's call).
+void write_rows(const hid_t set, const std::string& name, const RowRange& rows,
+                const unsigned int n_columns, const hid_t type, const std::size_t first,
+                const std::size_t count, const void* data)
 {
   const int rank = n_columns == 1 ? 1 : 2;
   const hsize_t dims[2] = {static_cast<hsize_t>(rows.total), static_cast<hsize_t>(n_columns)};
   const Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose,
                      "create a data space for '" + name + "'");
-  const Handle set(
-      H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
-      "create dataset '" + name + "'");
-  if (rows.total == 0)
-    return;
-  const hsize_t start[2] = {static_cast<hsize_t>(rows.first), 0};
-  const hsize_t count[2] = {static_cast<hsize_t>(rows.count), static_cast<hsize_t>(n_columns)};
-  const Handle memory(H5Screate_simple(rank, count, nullptr), H5Sclose,
+  const hsize_t start[2] = {static_cast<hsize_t>(rows.first + first), 0};
+  const hsize_t shape[2] = {static_cast<hsize_t>(std::max<std::size_t>(count, 1)),
+                            static_cast<hsize_t>(n_columns)};
+  const Handle memory(H5Screate_simple(rank, shape, nullptr), H5Sclose,
                       "create a memory space for '" + name + "'");
-  if (rows.count == 0)
+  if (count == 0)
   {
     check(H5Sselect_none(space), "select no rows of '" + name + "'");
     check(H5Sselect_none(memory), "select no rows of '" + name + "'");
   }
   else
-    check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr),
+    check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, shape, nullptr),
           "select rows of '" + name + "'");
   check(H5Dwrite(set, type, memory, space, rows.transfer, data), "write dataset '" + name + "'");
+}
+
+/// Creates the dataset `name` and writes this process's rows: a borrowed array in one call, a
+/// computed field chunk by chunk (`n_chunks` calls on every rank, for collective writes).
+void write_field(const hid_t file, const ParticleSnapshot::Field& field, const RowRange& rows,
+                 const std::size_t chunk_rows, const std::size_t n_chunks)
+{
+  const bool integer = field.kind == ParticleSnapshot::FieldKind::integer;
+  const unsigned int n_columns = n_components(field.kind);
+  const hid_t file_type = integer ? H5T_NATIVE_INT32 : H5T_NATIVE_DOUBLE;
+  const int rank = n_columns == 1 ? 1 : 2;
+  const hsize_t dims[2] = {static_cast<hsize_t>(rows.total), static_cast<hsize_t>(n_columns)};
+  const Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose,
+                     "create a data space for '" + field.name + "'");
+  const Handle set(H5Dcreate2(file, field.name.c_str(), file_type, space, H5P_DEFAULT,
+                              H5P_DEFAULT, H5P_DEFAULT),
+                   H5Dclose, "create dataset '" + field.name + "'");
+  if (rows.total == 0)
+    return;
+  if (field.borrowed)
+  {
+    write_rows(set, field.name, rows, n_columns, memory_type(field.element), 0, rows.count,
+               field.borrowed);
+    return;
+  }
+  const std::size_t width = integer ? sizeof(std::int32_t) : sizeof(double);
+  std::vector<char> buffer(std::min(chunk_rows, rows.count) * n_columns * width);
+  for (std::size_t c = 0; c < n_chunks; ++c)
+  {
+    const std::size_t first = std::min(c * chunk_rows, rows.count);
+    const std::size_t count = std::min(chunk_rows, rows.count - first);
+    if (count > 0)
+      field.fill(first, count, buffer.data());
+    write_rows(set, field.name, rows, n_columns, file_type, first, count, buffer.data());
+  }
 }
 
 std::string dimensions(const std::size_t n, const unsigned int n_columns)
@@ -116,63 +168,67 @@ std::string data_item(const std::string& file, const std::string& dataset, const
 
 ParticleSnapshot::ParticleSnapshot(const std::size_t n_particles) : n(n_particles) {}
 
-void ParticleSnapshot::set_positions(const double* xyz)
+void ParticleSnapshot::set_rows_per_chunk(const std::size_t rows)
 {
-  position_values.assign(xyz, xyz + 3 * n);
-  borrowed_positions = nullptr;
+  if (rows == 0)
+    throw std::invalid_argument("particle output: rows per chunk must be positive");
+  chunk_rows = rows;
+}
+
+void ParticleSnapshot::add_field(Field field)
+{
+  const std::string& name = field.name;
+  if (name.empty() || name == "positions" || name.find_first_of("/<>&\"") != std::string::npos)
+    throw std::invalid_argument("particle field name '" + name +
+                                "' is empty, reserved or contains / < > & \"");
+  for (const Field& existing : field_list)
+    if (existing.name == name)
+      throw std::invalid_argument("particle field '" + name + "' added twice");
+  if (!field.borrowed && !field.fill && n > 0)
+    throw std::invalid_argument("particle field '" + name + "' has no values");
+  field_list.push_back(std::move(field));
+}
+
+void ParticleSnapshot::borrow_scalar(const std::string& name, const double* values)
+{
+  add_field({name, FieldKind::scalar, values, Element::float64, {}});
 }
 
 void ParticleSnapshot::borrow_vector(const std::string& name, const double* values)
 {
-  new_field(name, FieldKind::vector).borrowed = values;
+  add_field({name, FieldKind::vector, values, Element::float64, {}});
+}
+
+void ParticleSnapshot::borrow_vector(const std::string& name, const float* values)
+{
+  add_field({name, FieldKind::vector, values, Element::float32, {}});
 }
 
 void ParticleSnapshot::borrow_symmetric_tensor(const std::string& name, const double* voigt)
 {
-  new_field(name, FieldKind::symmetric_tensor).borrowed = voigt;
+  add_field({name, FieldKind::symmetric_tensor, voigt, Element::float64, {}});
 }
 
-ParticleSnapshot::Field& ParticleSnapshot::new_field(const std::string& name, const FieldKind kind)
+void ParticleSnapshot::borrow_integer(const std::string& name, const std::uint8_t* values)
 {
-  if (name.empty() || name == "positions" || name.find_first_of("/<>&\"") != std::string::npos)
-    throw std::invalid_argument("particle field name '" + name +
-                                "' is empty, reserved or contains / < > & \"");
-  for (const Field& field : field_list)
-    if (field.name == name)
-      throw std::invalid_argument("particle field '" + name + "' added twice");
-  field_list.push_back(Field{name, kind, {}, {}, nullptr});
-  return field_list.back();
+  add_field({name, FieldKind::integer, values, Element::uint8, {}});
 }
 
-void ParticleSnapshot::add_scalar(const std::string& name, const double* values)
+void ParticleSnapshot::borrow_integer(const std::string& name, const std::uint32_t* values)
 {
-  new_field(name, FieldKind::scalar).values.assign(values, values + n);
+  add_field({name, FieldKind::integer, values, Element::uint32, {}});
 }
 
-void ParticleSnapshot::add_vector(const std::string& name, const double* values)
+void ParticleSnapshot::borrow_integer(const std::string& name, const std::int32_t* values)
 {
-  new_field(name, FieldKind::vector).values.assign(values, values + 3 * n);
+  add_field({name, FieldKind::integer, values, Element::int32, {}});
 }
 
-void ParticleSnapshot::add_symmetric_tensor(const std::string& name, const double* voigt)
+void ParticleSnapshot::compute(const std::string& name, const FieldKind kind, Fill fill)
 {
-  std::vector<double>& full = new_field(name, FieldKind::tensor).values;
-  full.resize(9 * n);
-  // Voigt xx yy zz xy yz xz -> row-major xx xy xz / yx yy yz / zx zy zz.
-  static const unsigned int voigt_of[9] = {0, 3, 5, 3, 1, 4, 5, 4, 2};
-  for (std::size_t i = 0; i < n; ++i)
-    for (unsigned int c = 0; c < 9; ++c)
-      full[9 * i + c] = voigt[6 * i + voigt_of[c]];
-}
-
-void ParticleSnapshot::add_tensor(const std::string& name, const double* values)
-{
-  new_field(name, FieldKind::tensor).values.assign(values, values + 9 * n);
-}
-
-void ParticleSnapshot::add_integer(const std::string& name, const std::int32_t* values)
-{
-  new_field(name, FieldKind::integer).integers.assign(values, values + n);
+  if (!fill)
+    throw std::invalid_argument("particle field '" + name + "' has no fill function");
+  add_field({name, kind, nullptr, Element::float64, std::move(fill)});
 }
 
 void write_particle_hdf5(const std::string& path, const double time,
@@ -204,15 +260,19 @@ void write_particle_hdf5(const std::string& path, const double time,
   const std::size_t n = snapshot.n_particles();
   RowRange rows{parallel ? first_row : 0, n, parallel ? total_rows : n,
                 parallel ? hid_t(transfer) : H5P_DEFAULT};
-  const std::vector<double> origin(n > 0 && !snapshot.positions() ? 3 * n : 0, 0.0);
-  write_dataset(file, "positions", rows, 3, H5T_NATIVE_DOUBLE,
-                snapshot.positions() ? snapshot.positions() : origin.data());
+  unsigned long long most_rows = n;
+  if (parallel)
+    MPI_Allreduce(MPI_IN_PLACE, &most_rows, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, communicator);
+  const std::size_t chunk_rows = snapshot.rows_per_chunk();
+  const std::size_t n_chunks = (most_rows + chunk_rows - 1) / chunk_rows;
+
+  ParticleSnapshot::Field positions{"positions", ParticleSnapshot::FieldKind::vector,
+                                    snapshot.positions(), ParticleSnapshot::Element::float64,
+                                    [](std::size_t, std::size_t count, void* out)
+                                    { std::fill_n(static_cast<double*>(out), 3 * count, 0.0); }};
+  write_field(file, positions, rows, chunk_rows, n_chunks);
   for (const ParticleSnapshot::Field& field : snapshot.fields())
-    if (field.kind == ParticleSnapshot::FieldKind::integer)
-      write_dataset(file, field.name, rows, 1, H5T_NATIVE_INT32, field.integers.data());
-    else
-      write_dataset(file, field.name, rows, n_components(field.kind), H5T_NATIVE_DOUBLE,
-                    field.data());
+    write_field(file, field, rows, chunk_rows, n_chunks);
   check(H5Fflush(file, H5F_SCOPE_LOCAL), "flush '" + path + "'");
 }
 

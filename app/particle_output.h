@@ -8,13 +8,16 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
 
 namespace vulnus::app
 {
-/// The particle set at one output time: positions and named per-particle fields, copied in.
+/// The particle set at one output time: positions and named per-particle fields. Fields are
+/// borrowed (a pointer to the caller's array, which must stay unchanged until the snapshot is
+/// written) or computed in chunks of rows while writing, so output costs no memory per point.
 class ParticleSnapshot
 {
 public:
@@ -22,19 +25,31 @@ public:
   {
     scalar, ///< n values, double
     vector, ///< n x 3, double
-    tensor, ///< n x 9, double, row-major (add_symmetric_tensor stores expanded)
+    tensor, ///< n x 9, double, row-major
     integer, ///< n values, int32 (failure flag, material id)
     symmetric_tensor ///< n x 6, double, Voigt order xx yy zz xy yz xz (XDMF Tensor6)
   };
+  /// Element type of a borrowed array; the file holds doubles (int32 for integer fields) and
+  /// HDF5 converts while writing.
+  enum class Element
+  {
+    float64,
+    float32,
+    uint8,
+    uint32,
+    int32
+  };
+  /// Fills rows [first, first + count) of a computed field: count x components values,
+  /// interleaved, as double (int32 for integer fields).
+  using Fill = std::function<void(std::size_t first, std::size_t count, void* out)>;
 
   struct Field
   {
     std::string name;
     FieldKind kind;
-    std::vector<double> values;         ///< scalar, vector, tensor (copied in)
-    std::vector<std::int32_t> integers; ///< integer
-    const double* borrowed = nullptr;   ///< instead of values, for borrow_* fields
-    const double* data() const { return borrowed ? borrowed : values.data(); }
+    const void* borrowed = nullptr; ///< the whole array, or null for a computed field
+    Element element = Element::float64;
+    Fill fill;
   };
 
   explicit ParticleSnapshot(std::size_t n_particles);
@@ -42,46 +57,33 @@ public:
   std::size_t n_particles() const { return n; }
 
   /// n x 3 coordinates, interleaved x y z (an array of Eigen::Vector3d can be passed as
-  /// `positions[0].data()`).
-  void set_positions(const double* xyz);
-  /// The borrow_* calls keep a pointer instead of a copy (no memory per point for output):
-  /// the array must stay unchanged until the snapshot is written.
+  /// `positions[0].data()`); written as zeros when never set.
   void borrow_positions(const double* xyz) { borrowed_positions = xyz; }
+  void borrow_scalar(const std::string& name, const double* values);
+  /// n x 3, interleaved.
   void borrow_vector(const std::string& name, const double* values);
+  void borrow_vector(const std::string& name, const float* values);
   /// n x 6 in Voigt order xx yy zz xy yz xz, stored as 6 components (XDMF Tensor6).
   void borrow_symmetric_tensor(const std::string& name, const double* voigt);
-  void add_scalar(const std::string& name, const double* values);
-  /// n x 3, interleaved.
-  void add_vector(const std::string& name, const double* values);
-  /// n x 6 in Voigt order xx yy zz xy yz xz; stored as a full 3 x 3 tensor.
-  void add_symmetric_tensor(const std::string& name, const double* voigt);
-  /// n x 9 row-major (an array of symmetric Eigen::Matrix3d can be passed directly).
-  void add_tensor(const std::string& name, const double* values);
-  void add_integer(const std::string& name, const std::int32_t* values);
+  void borrow_integer(const std::string& name, const std::uint8_t* values);
+  void borrow_integer(const std::string& name, const std::uint32_t* values);
+  void borrow_integer(const std::string& name, const std::int32_t* values);
+  /// A field produced chunk by chunk while writing (values derived from several arrays).
+  void compute(const std::string& name, FieldKind kind, Fill fill);
 
-  /// Integer field from any integer type (e.g. std::uint8_t failure flags).
-  template <class Integer> void add_integer_from(const std::string& name, const Integer* values)
-  {
-    std::vector<std::int32_t> converted(n);
-    for (std::size_t i = 0; i < n; ++i)
-      converted[i] = static_cast<std::int32_t>(values[i]);
-    add_integer(name, converted.data());
-  }
+  /// Rows computed at a time (memory of a computed field while writing: rows x components).
+  void set_rows_per_chunk(std::size_t rows);
+  std::size_t rows_per_chunk() const { return chunk_rows; }
 
-  /// n x 3, interleaved; null until set (written as zeros).
-  const double* positions() const
-  {
-    if (borrowed_positions)
-      return borrowed_positions;
-    return position_values.empty() ? nullptr : position_values.data();
-  }
+  /// n x 3, interleaved; null until set.
+  const double* positions() const { return borrowed_positions; }
   const std::vector<Field>& fields() const { return field_list; }
 
 private:
-  Field& new_field(const std::string& name, FieldKind kind);
+  void add_field(Field field);
 
   std::size_t n;
-  std::vector<double> position_values;
+  std::size_t chunk_rows = 65536;
   const double* borrowed_positions = nullptr;
   std::vector<Field> field_list;
 };

@@ -9,11 +9,9 @@ namespace vulnus::mpm
 {
 void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
                              const KinematicsSettings& s, const GridFields& fields,
-                             Particles& particles, std::vector<Vector3>& displacement)
+                             Particles& particles)
 {
-  displacement.resize(particles.size());
   const std::size_t n_bodies = particles.n_bodies();
-  const double dt = s.time_step;
   const double flip = s.flip_fraction;
   with_shape(transfer.shape, [&](auto shape_constant) {
     constexpr ShapeFunction shape = decltype(shape_constant)::value;
@@ -25,10 +23,7 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
         const Vector3 v = s.rigid_velocity[b];
 #pragma omp parallel for schedule(static)
         for (long p = begin; p < end; ++p)
-        {
           particles.velocity[p] = v;
-          displacement[p] = dt * v;
-        }
         continue;
       }
       const double lp = transfer.half_size_cells[b];
@@ -47,28 +42,20 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
                                v_pic += w * velocity_new[e];
                                dv += w * (velocity_new[e] - velocity_old[e]);
                              });
-        displacement[p] = dt * v_pic;
         particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
       }
     }
   });
 }
 
-void move_points(const std::vector<Vector3>& displacement, Particles& particles)
-{
-  const long n = static_cast<long>(particles.size());
-#pragma omp parallel for schedule(static)
-  for (long p = 0; p < n; ++p)
-    particles.position[p] += displacement[p];
-}
-
-void update_deformation_gradients(const Grid& grid, const TransferSettings& transfer,
-                                  const KinematicsSettings& s, const GridFields& fields,
-                                  Particles& particles, std::vector<double>& volumetric_rate)
+void update_deformation_gradients_and_positions(const Grid& grid, const TransferSettings& transfer,
+                                                const KinematicsSettings& s,
+                                                const GridFields& fields,
+                                                const std::vector<Vector3>& gradient_velocity,
+                                                Particles& particles, double* volumetric_rate)
 {
   const std::size_t n_bodies = particles.n_bodies();
   const double dt = s.time_step;
-  volumetric_rate.resize(particles.size());
   with_shape(transfer.shape, [&](auto shape_constant) {
     constexpr ShapeFunction shape = decltype(shape_constant)::value;
     for (std::size_t b = 0; b < n_bodies; ++b)
@@ -76,26 +63,44 @@ void update_deformation_gradients(const Grid& grid, const TransferSettings& tran
       const long begin = particles.begin_of(b), end = particles.end_of(b);
       if (s.body_is_rigid[b])
       {
+        const Vector3 step = dt * s.rigid_velocity[b];
+#pragma omp parallel for schedule(static)
         for (long p = begin; p < end; ++p)
-          volumetric_rate[p] = 0.0;
+        {
+          particles.position[p] += step;
+          if (volumetric_rate)
+            volumetric_rate[p] = 0.0;
+        }
         continue;
       }
       const double lp = transfer.half_size_cells[b];
-      const std::vector<Vector3>& velocity_new = fields.velocity_new; // see above
+      // Named here: clang 14 rejects the outer function's parameters inside an OpenMP loop
+      // nested in two lambdas.
+      const std::vector<Vector3>& velocity_new = fields.velocity_new;
+      const std::vector<Vector3>& velocity_for_gradient = gradient_velocity;
 #pragma omp parallel for schedule(static)
       for (long p = begin; p < end; ++p)
       {
         Tensor2 L = Tensor2::Zero();
+        Vector3 v = Vector3::Zero();
         for_each_node<shape>(grid, lp, particles.position[p],
-                             [&](const std::int64_t key, double, const Vector3& grad_w) {
-                               L.noalias() += velocity_new[grid.slot(key) * n_bodies + b] *
-                                              grad_w.transpose();
+                             [&](const std::int64_t key, const double w, const Vector3& grad_w) {
+                               const std::size_t e = grid.slot(key) * n_bodies + b;
+                               L.noalias() += velocity_for_gradient[e] * grad_w.transpose();
+                               v += w * velocity_new[e];
                              });
+        particles.position[p] += dt * v;
         Tensor2& F = particles.deformation_gradient[p];
-        const double J_old = F.determinant();
-        F = (Tensor2::Identity() + dt * L) * F;
-        const double J_new = F.determinant();
-        volumetric_rate[p] = (J_new > 0.0 && J_old > 0.0) ? std::log(J_new / J_old) / dt : L.trace();
+        if (volumetric_rate)
+        {
+          const double J_old = F.determinant();
+          F = (Tensor2::Identity() + dt * L) * F;
+          const double J_new = F.determinant();
+          volumetric_rate[p] =
+            (J_new > 0.0 && J_old > 0.0) ? std::log(J_new / J_old) / dt : L.trace();
+        }
+        else
+          F = (Tensor2::Identity() + dt * L) * F;
       }
     }
   });

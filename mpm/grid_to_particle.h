@@ -1,6 +1,6 @@
-// Grid-to-particle stage: point velocities (FLIP/PIC blend) and displacements from the nodal
-// velocities, then the velocity gradient and the deformation gradient update
-// F <- (I + dt L) F. Rigid bodies translate with their rigid velocity.
+// Grid-to-particle stage: point velocities (FLIP/PIC blend) from the nodal velocities, then
+// the velocity gradient, the deformation gradient update F <- (I + dt L) F and the position
+// update in one gather. Rigid bodies translate with their rigid velocity.
 #pragma once
 
 #include "mpm/grid.h"
@@ -20,19 +20,20 @@ struct KinematicsSettings
   std::vector<Vector3> rigid_velocity;
 };
 
-/// Updates point velocities from fields.velocity and fields.velocity_new and writes each
-/// point's displacement of this step (dt times the interpolated v_new) into displacement;
-/// positions move later (move_points), after the velocity gradient used the same stencil.
+/// Updates point velocities from fields.velocity (v^n) and fields.velocity_new (v^(n+1)):
+/// FLIP/PIC blend. Rigid bodies take their rigid velocity.
 void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
                              const KinematicsSettings& settings, const GridFields& fields,
-                             Particles& particles, std::vector<Vector3>& displacement);
+                             Particles& particles);
 
-/// x <- x + displacement.
-void move_points(const std::vector<Vector3>& displacement, Particles& particles);
-
-/// F <- (I + dt L) F with L = sum v_new (x) grad w; writes the volumetric strain rate
-/// ln(J_new / J_old) / dt of every point into volumetric_rate. Rigid bodies keep F = I.
-void update_deformation_gradients(const Grid& grid, const TransferSettings& transfer,
-                                  const KinematicsSettings& settings, const GridFields& fields,
-                                  Particles& particles, std::vector<double>& volumetric_rate);
+/// One gather per point at its position of step n: F <- (I + dt L) F with
+/// L = sum v_gradient (x) grad w, then x <- x + dt sum w v_new (v_new = fields.velocity_new, the
+/// velocities of the grid update; `gradient_velocity` is the same field for USL and the
+/// re-projected one for MUSL). With a non-null volumetric_rate (sized like the points), writes
+/// ln(J_new / J_old) / dt of every point into it. Rigid bodies keep F = I and translate.
+void update_deformation_gradients_and_positions(const Grid& grid, const TransferSettings& transfer,
+                                                const KinematicsSettings& settings,
+                                                const GridFields& fields,
+                                                const std::vector<Vector3>& gradient_velocity,
+                                                Particles& particles, double* volumetric_rate);
 } // namespace vulnus::mpm

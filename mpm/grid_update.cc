@@ -220,16 +220,16 @@ void velocities_from_momenta(const Grid& grid, const GridUpdateSettings& s, Grid
       const NodeBodyData& d = fields.data[e];
       if (d.mass <= s.mass_tolerance)
       {
-        fields.velocity_new[e].setZero();
+        fields.velocity[e].setZero();
         continue;
       }
       if (s.body_is_rigid[b])
       {
-        fields.velocity_new[e] = s.rigid_velocity[b];
+        fields.velocity[e] = s.rigid_velocity[b];
         continue;
       }
-      fields.velocity_new[e] = d.momentum / d.mass;
-      apply_face_conditions(grid, s.faces, key, fields.velocity_new[e]);
+      fields.velocity[e] = d.momentum / d.mass;
+      apply_face_conditions(grid, s.faces, key, fields.velocity[e]);
     }
   }
 }

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -57,6 +58,13 @@ struct Particles
   std::size_t n_bodies() const { return body_begin.size() - 1; }
   std::size_t begin_of(std::size_t b) const { return body_begin[b]; }
   std::size_t end_of(std::size_t b) const { return body_begin[b + 1]; }
+  /// The body point i belongs to.
+  std::size_t body_of(std::size_t i) const
+  {
+    return static_cast<std::size_t>(
+             std::upper_bound(body_begin.begin() + 1, body_begin.end(), i) - body_begin.begin()) -
+           1;
+  }
 
   void reserve(std::size_t n);
   /// Appends one point to the last body (call start_body first).

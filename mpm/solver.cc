@@ -98,9 +98,8 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
 
   // Initial stresses and wave speeds (non-zero when a body starts deformed is not supported:
   // F = I, so this gives the small-strain moduli for the first CFL step).
-  volumetric_rate.assign(particles.size(), 0.0);
   stress_settings.time_step = 0.0;
-  update_stresses(stress_settings, volumetric_rate, particles, stress_result);
+  update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
   sort_points();
   const SceneDiagnostics d = diagnostics();
   energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
@@ -185,21 +184,23 @@ void Solver::advance(const double cap)
   }
 
   kinematics.time_step = dt;
-  update_point_kinematics(grid, transfer, kinematics, fields, particles, displacement);
-  if (parameters.update_scheme == UpdateScheme::musl)
+  update_point_kinematics(grid, transfer, kinematics, fields, particles);
+  const bool musl = parameters.update_scheme == UpdateScheme::musl;
+  if (musl)
   {
     particles_to_grid(particles, grid, transfer, false, buffers, fields);
     sum_node_data_with_neighbours();
     velocities_from_momenta(grid, grid_settings, fields);
     if (shared.partner)
-      impose_shared_velocities();
+      impose_shared_velocities(fields.velocity);
   }
-  update_deformation_gradients(grid, transfer, kinematics, fields, particles, volumetric_rate);
-  move_points(displacement, particles);
+  update_deformation_gradients_and_positions(grid, transfer, kinematics, fields,
+                                             musl ? fields.velocity : fields.velocity_new,
+                                             particles, volumetric_rate_or_null());
   lap(timings.grid_to_particle);
 
   stress_settings.time_step = dt;
-  update_stresses(stress_settings, volumetric_rate, particles, stress_result);
+  update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
   std::vector<double> yield_ratio = stress_result.max_von_mises_over_yield;
   ranks.max(yield_ratio.data(), static_cast<int>(yield_ratio.size()));
   for (std::size_t b = 0; b < peak_yield_ratio.size(); ++b)
@@ -252,6 +253,14 @@ bool Solver::finished() const
     return ranks.min(tail) > exit_plane;
   }
   return false;
+}
+
+double* Solver::volumetric_rate_or_null()
+{
+  if (!stress_settings.uses_viscosity())
+    return nullptr;
+  volumetric_rate.resize(particles.size(), 0.0);
+  return volumetric_rate.data();
 }
 
 void Solver::sort_points()

@@ -141,7 +141,12 @@ private:
   void sort_points();
   void exchange_shared_nodes(double dt);
   void sum_shared_state_over_ranks();
-  void impose_shared_velocities();
+  /// Sets the interface velocities of the exchange in `velocity` (the grid update's or, for
+  /// MUSL, the re-projected nodal velocities).
+  void impose_shared_velocities(std::vector<Vector3>& velocity);
+  /// Per-point volumetric strain rate for the bulk viscosity, sized to the points; null (no
+  /// memory) when the viscosity is off.
+  double* volumetric_rate_or_null();
   void check_state() const;
   std::string state_problem() const;
   void plan_slabs();
@@ -169,7 +174,6 @@ private:
   StressUpdateSettings stress_settings;
   StressUpdateResult stress_result;
   std::vector<double> body_mass;
-  std::vector<Vector3> displacement;
   std::vector<double> volumetric_rate;
   std::vector<double> peak_yield_ratio;
   SharedNodes shared;

@@ -105,6 +105,5 @@ void Solver::restore(std::istream& in)
   n_removed = removed;
   outflow_energy = outflow;
   outflow_momentum = outflow_p;
-  volumetric_rate.assign(particles.size(), 0.0);
 }
 } // namespace vulnus::mpm

@@ -121,7 +121,6 @@ void Solver::migrate_points(const bool to_any_rank)
       incoming.push_back(from_bytes(incoming_bytes[i].data(), incoming_bytes[i].size()));
   if (n_leaving > 0 || !incoming.empty())
     exchange_in_place(particles, stays, incoming);
-  volumetric_rate.resize(particles.size(), 0.0);
 }
 
 void Solver::sum_node_data_with_neighbours()

@@ -54,7 +54,7 @@ void Solver::exchange_shared_nodes(const double dt)
     if (slot >= 0 && fields.data[slot * n_bodies + b].mass > 0.0)
       fields.velocity[slot * n_bodies + b] = shared_velocity_start[k];
   }
-  impose_shared_velocities();
+  impose_shared_velocities(fields.velocity_new);
 }
 
 void Solver::sum_shared_state_over_ranks()
@@ -85,7 +85,7 @@ void Solver::sum_shared_state_over_ranks()
   }
 }
 
-void Solver::impose_shared_velocities()
+void Solver::impose_shared_velocities(std::vector<Vector3>& velocity)
 {
   const std::size_t n_bodies = fields.n_bodies;
   const std::size_t b = shared.body;
@@ -94,7 +94,7 @@ void Solver::impose_shared_velocities()
     const std::int32_t slot = grid.slot(shared.keys[k]);
     if (slot < 0 || fields.data[slot * n_bodies + b].mass <= 0.0)
       continue;
-    Vector3& v = fields.velocity_new[slot * n_bodies + b];
+    Vector3& v = velocity[slot * n_bodies + b];
     v = shared_velocity_end[k];
     apply_face_conditions(grid, grid_settings.faces, shared.keys[k], v);
   }

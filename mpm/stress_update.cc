@@ -13,7 +13,7 @@ constexpr long block_size = 512;
 
 /// Updates points [begin, end) of one body; returns the viscous dissipation (J).
 double update_range(const StressUpdateSettings& s, const materials::Material& material,
-                    const double density, const std::vector<double>& volumetric_rate,
+                    const double density, const double* volumetric_rate,
                     Particles& particles, const long begin, const long end,
                     std::vector<materials::PointResponse>& responses, double& max_ratio)
 {
@@ -44,8 +44,8 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
       double wave_speed = std::sqrt(r.p_wave_modulus / current_density);
       Tensor2 sigma = r.cauchy_stress;
       double dissipated = r.dissipated_density;
-      const double rate = volumetric_rate[p];
-      if (rate < 0.0 && (s.viscosity_linear > 0.0 || s.viscosity_quadratic > 0.0))
+      const double rate = volumetric_rate ? volumetric_rate[p] : 0.0;
+      if (rate < 0.0)
       {
         const double h = s.cell_size;
         const double q = current_density * (s.viscosity_linear * wave_speed * h * -rate +
@@ -70,7 +70,7 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
 }
 } // namespace
 
-void update_stresses(const StressUpdateSettings& s, const std::vector<double>& volumetric_rate,
+void update_stresses(const StressUpdateSettings& s, const double* volumetric_rate,
                      Particles& particles, StressUpdateResult& result)
 {
   const std::size_t n_bodies = particles.n_bodies();

@@ -17,6 +17,7 @@ struct StressUpdateSettings
   /// Bulk viscosity q = rho (linear c h |tr D| + quadratic h^2 tr(D)^2) in compression.
   double viscosity_linear = 0.0;
   double viscosity_quadratic = 0.0;
+  bool uses_viscosity() const { return viscosity_linear > 0.0 || viscosity_quadratic > 0.0; }
   std::vector<const materials::Material*> body_material;
   std::vector<double> body_density; ///< reference density per body, kg/m^3
 };
@@ -30,7 +31,8 @@ struct StressUpdateResult
   std::string failure_message;
 };
 
+/// volumetric_rate (per point, ln(J_new / J_old) / dt) may be null when the viscosity is off.
 void update_stresses(const StressUpdateSettings& settings,
-                     const std::vector<double>& volumetric_rate, Particles& particles,
+                     const double* volumetric_rate, Particles& particles,
                      StressUpdateResult& result);
 } // namespace vulnus::mpm

@@ -72,6 +72,60 @@ TEST(ParticleOutput, BorrowedArraysAndTensor6)
   EXPECT_NE(xdmf.find("Dimensions=\"2 6\""), std::string::npos) << xdmf;
 }
 
+// Computed fields are written in chunks of rows: 20 rows in chunks of 7 (7, 7, 6) land in
+// the right rows; float and unsigned arrays are converted to the file's double and int32.
+TEST(ParticleOutput, ComputedFieldsInChunksAndConvertedArrays)
+{
+  ScratchDirectory scratch("particles_chunks");
+  const std::size_t n = 20;
+  std::vector<float> reference(3 * n);
+  std::vector<std::uint32_t> ids(n);
+  std::vector<double> expected_reference(3 * n), expected_ids(n), expected_half(n), expected_thrice(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      reference[3 * i + d] = 0.25f * static_cast<float>(i) + static_cast<float>(d);
+      expected_reference[3 * i + d] = reference[3 * i + d];
+    }
+    ids[i] = static_cast<std::uint32_t>(1000 + i);
+    expected_ids[i] = 1000.0 + static_cast<double>(i);
+    expected_half[i] = 0.5 * static_cast<double>(i);
+    expected_thrice[i] = 3.0 * static_cast<double>(i);
+  }
+  ParticleSnapshot snapshot(n);
+  snapshot.set_rows_per_chunk(7);
+  snapshot.borrow_vector("reference_position", reference.data());
+  snapshot.borrow_integer("id", ids.data());
+  std::vector<std::size_t> calls;
+  snapshot.compute("half", ParticleSnapshot::FieldKind::scalar,
+                   [&calls](std::size_t first, std::size_t count, void* out)
+                   {
+                     calls.push_back(count);
+                     for (std::size_t i = 0; i < count; ++i)
+                       static_cast<double*>(out)[i] = 0.5 * static_cast<double>(first + i);
+                   });
+  snapshot.compute("thrice", ParticleSnapshot::FieldKind::integer,
+                   [](std::size_t first, std::size_t count, void* out)
+                   {
+                     for (std::size_t i = 0; i < count; ++i)
+                       static_cast<std::int32_t*>(out)[i] = static_cast<std::int32_t>(3 * (first + i));
+                   });
+  ParticleOutput output(scratch.path.string());
+  const std::string path = output.write(0.0, snapshot);
+  EXPECT_EQ(calls, (std::vector<std::size_t>{7, 7, 6}));
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  std::vector<hsize_t> dims;
+  EXPECT_EQ(read_doubles(file, "positions", dims), std::vector<double>(3 * n, 0.0));
+  EXPECT_EQ(read_doubles(file, "reference_position", dims), expected_reference);
+  EXPECT_EQ(read_doubles(file, "id", dims), expected_ids);
+  EXPECT_EQ(read_doubles(file, "half", dims), expected_half);
+  EXPECT_EQ(read_doubles(file, "thrice", dims), expected_thrice);
+  H5Fclose(file);
+  EXPECT_THROW(snapshot.set_rows_per_chunk(0), std::invalid_argument);
+}
+
 TEST(ParticleOutput, RoundTripThroughHdf5AndXdmfNamesDatasets)
 {
   ScratchDirectory scratch("particles");
@@ -83,12 +137,23 @@ TEST(ParticleOutput, RoundTripThroughHdf5AndXdmfNamesDatasets)
   const std::vector<std::uint8_t> failure = {0, 1, 3};
 
   ParticleSnapshot snapshot(n);
-  snapshot.set_positions(x.data());
-  snapshot.add_vector("velocity", v.data());
-  snapshot.add_scalar("mass", mass.data());
-  snapshot.add_symmetric_tensor("stress", stress.data());
-  snapshot.add_integer_from("failure", failure.data());
-  EXPECT_THROW(snapshot.add_scalar("mass", mass.data()), std::invalid_argument);
+  snapshot.borrow_positions(x.data());
+  snapshot.borrow_vector("velocity", v.data());
+  snapshot.borrow_scalar("mass", mass.data());
+  // Voigt xx yy zz xy yz xz expanded to a row-major full tensor while writing.
+  snapshot.compute("stress", ParticleSnapshot::FieldKind::tensor,
+                   [&stress](std::size_t first, std::size_t count, void* out)
+                   {
+                     static const unsigned int voigt_of[9] = {0, 3, 5, 3, 1, 4, 5, 4, 2};
+                     auto* full = static_cast<double*>(out);
+                     for (std::size_t i = 0; i < count; ++i)
+                       for (unsigned int c = 0; c < 9; ++c)
+                         full[9 * i + c] = stress[6 * (first + i) + voigt_of[c]];
+                   });
+  snapshot.borrow_integer("failure", failure.data());
+  EXPECT_THROW(snapshot.borrow_scalar("mass", mass.data()), std::invalid_argument);
+  EXPECT_THROW(snapshot.compute("empty", ParticleSnapshot::FieldKind::scalar, {}),
+               std::invalid_argument);
 
   ParticleOutput output(scratch.path.string());
   const std::string first = output.write(0.0, snapshot);
