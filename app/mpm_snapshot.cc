@@ -16,11 +16,7 @@ ParticleSnapshot mpm_snapshot(const mpm::Solver& solver)
   s.borrow_positions(n ? p.position[0].data() : nullptr);
   s.borrow_vector("velocity", n ? p.velocity[0].data() : nullptr);
   s.borrow_symmetric_tensor("stress", n ? p.stress[0].data() : nullptr);
-  s.compute("failure", Kind::integer, [&p](std::size_t first, std::size_t count, void* out) {
-    auto* flags = static_cast<std::int32_t*>(out);
-    for (std::size_t i = 0; i < count; ++i)
-      flags[i] = p.state[first + i].failure;
-  });
+  s.borrow_integer("failure", n ? p.failure.data() : nullptr);
   s.compute("fiber_direction", Kind::vector,
             [&p, &solver](std::size_t first, std::size_t count, void* out) {
               auto* fiber = static_cast<double*>(out);
@@ -47,7 +43,10 @@ ParticleSnapshot mpm_snapshot(const mpm::Solver& solver)
             [&p](std::size_t first, std::size_t count, void* out) {
               auto* plastic = static_cast<double*>(out);
               for (std::size_t i = 0; i < count; ++i)
-                plastic[i] = p.state[first + i].equivalent_plastic_strain;
+              {
+                const materials::PlasticHistory* history = p.plastic_of(first + i);
+                plastic[i] = history ? history->equivalent_plastic_strain : 0.0;
+              }
             });
   s.borrow_vector("reference_position", n ? p.reference_position[0].data() : nullptr);
   return s;

@@ -43,7 +43,7 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
       const double along = p.reference_position[i].dot(axis);
       entrance = std::min(entrance, along - half_spacing);
       exit = std::max(exit, along + half_spacing);
-      const std::uint8_t flag = p.state[i].failure;
+      const std::uint8_t flag = p.failure[i];
       if (flag == 0)
       {
         ++sample.n_intact;

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace vulnus::materials
@@ -29,16 +30,31 @@ enum FailureFlag : std::uint8_t
   total_failure = 3
 };
 
-/// History of one material point (64 bytes; every MPM point and FE quadrature point holds
-/// one). Irreversible failure flags and, for the elastic-plastic bullet, the plastic history.
+/// Plastic history of an elastic-plastic point (56 bytes).
+struct PlasticHistory
+{
+  double equivalent_plastic_strain = 0.0;
+  /// Inverse isochoric plastic right Cauchy-Green tensor C_p~^{-1} (det 1) in Voigt order xx
+  /// yy zz xy yz xz. The trial state b_e~ = F~ C_p~^{-1} F~^T needs no previous F (it equals
+  /// f b_e~_n f^T, f = F F_n^{-1}), and b_e~ itself need not be stored.
+  std::array<double, 6> inverse_plastic_cauchy_green{{1.0, 1.0, 1.0, 0.0, 0.0, 0.0}};
+};
+
+/// History of one material point: irreversible failure flags and the plastic history (read
+/// by the elastic-plastic law only). FE quadrature points and the point driver hold it whole;
+/// MPM points keep the flags per point and a plastic history only where the law has one
+/// (see PointBlock).
 struct PointState
 {
   std::uint8_t failure = intact;
-  double equivalent_plastic_strain = 0.0;
-  /// Inverse isochoric plastic right Cauchy-Green tensor C_p~^{-1} (det 1) in Voigt order xx
-  /// yy zz xy yz xz; elastic-plastic only. The trial state b_e~ = F~ C_p~^{-1} F~^T needs no
-  /// previous F (it equals f b_e~_n f^T, f = F F_n^{-1}), and b_e~ itself need not be stored.
-  std::array<double, 6> inverse_plastic_cauchy_green{{1.0, 1.0, 1.0, 0.0, 0.0, 0.0}};
+  PlasticHistory plastic;
+};
+
+/// Where a point's plastic history sits in a pool of histories.
+struct PlasticSlot
+{
+  static constexpr std::uint32_t none = 0xffffffffu;
+  std::uint32_t index = none;
 };
 
 /// What one update returns.
@@ -58,13 +74,16 @@ struct PointResponse
 };
 
 /// Arrays (structure of arrays) of a block of points that share one material.
-/// fiber_directions may be null for materials without fibers.
+/// fiber_directions may be null for materials without fibers. The plastic history of point i
+/// is plastic[plastic_slots[i].index]; both may be null for laws without plastic history.
 struct PointBlock
 {
   std::size_t n_points = 0;
   const Tensor2* deformation_gradients = nullptr;
   const Vector3* fiber_directions = nullptr;
-  PointState* states = nullptr;
+  std::uint8_t* failure = nullptr;
+  PlasticHistory* plastic = nullptr;
+  const PlasticSlot* plastic_slots = nullptr;
   PointResponse* responses = nullptr;
 };
 
@@ -80,6 +99,8 @@ public:
   virtual bool is_rigid() const { return false; }
   /// True when the law uses a fiber direction.
   virtual bool uses_fibers() const { return false; }
+  /// True when the law reads and writes PlasticHistory (else only the failure flags).
+  virtual bool has_plastic_history() const { return false; }
 
   /// Update one point: F the total deformation gradient, a0 the unit reference fiber
   /// direction (ignored without fibers). Updates the history in state.
@@ -103,17 +124,23 @@ public:
   void update(const Tensor2& F, const Vector3& a0, PointState& state,
               PointResponse& response) const final
   {
-    static_cast<const Law&>(*this).update_point(F, a0, state, response);
+    static_cast<const Law&>(*this).update_point(F, a0, state.failure, state.plastic, response);
   }
 
   void update_block(const PointBlock& block) const final
   {
     const Law& law = static_cast<const Law&>(*this);
+    if (law.has_plastic_history() && !(block.plastic && block.plastic_slots))
+      throw std::invalid_argument(law.model_name() +
+                                  ": a block of points without their plastic history");
     static const Vector3 no_fiber = Vector3::UnitX();
+    PlasticHistory unused; // laws without plastic history never touch it
     for (std::size_t i = 0; i < block.n_points; ++i)
       law.update_point(block.deformation_gradients[i],
                        block.fiber_directions ? block.fiber_directions[i] : no_fiber,
-                       block.states[i], block.responses[i]);
+                       block.failure[i],
+                       block.plastic ? block.plastic[block.plastic_slots[i].index] : unused,
+                       block.responses[i]);
   }
 };
 } // namespace vulnus::materials

@@ -45,7 +45,7 @@ NeoHookeanPlastic::NeoHookeanPlastic(const ElasticPlasticParameters& parameters)
 
 template <typename Scalar>
 PlasticReturn<Scalar> NeoHookeanPlastic::return_map(const Matrix3<Scalar>& F,
-                                                    const PointState& state) const
+                                                    const PlasticHistory& history) const
 {
   using std::cbrt;
   using std::sqrt;
@@ -58,12 +58,12 @@ PlasticReturn<Scalar> NeoHookeanPlastic::return_map(const Matrix3<Scalar>& F,
     throw_inverted(value_of(J));
   const Matrix3<Scalar> F_bar = (1.0 / cbrt(J)) * F;
   const Matrix3<Scalar> C_p_inverse =
-      from_voigt(state.inverse_plastic_cauchy_green).template cast<Scalar>();
+      from_voigt(history.inverse_plastic_cauchy_green).template cast<Scalar>();
   const Matrix3<Scalar> b_trial = F_bar * C_p_inverse * F_bar.transpose();
   const Scalar I_e = b_trial.trace() / 3.0;
   const Matrix3<Scalar> s_trial = mu * (b_trial - I_e * identity);
   const Scalar norm_trial = sqrt((s_trial.cwiseProduct(s_trial)).sum());
-  const double alpha_n = state.equivalent_plastic_strain;
+  const double alpha_n = history.equivalent_plastic_strain;
   const Scalar f_trial = norm_trial - sqrt_two_thirds * (prm.yield_stress + H * alpha_n);
 
   PlasticReturn<Scalar> result;
@@ -109,26 +109,26 @@ PlasticReturn<Scalar> NeoHookeanPlastic::return_map(const Matrix3<Scalar>& F,
 }
 
 template PlasticReturn<double> NeoHookeanPlastic::return_map(const Matrix3<double>&,
-                                                             const PointState&) const;
+                                                             const PlasticHistory&) const;
 template PlasticReturn<Dual> NeoHookeanPlastic::return_map(const Matrix3<Dual>&,
-                                                           const PointState&) const;
+                                                           const PlasticHistory&) const;
 
-void NeoHookeanPlastic::update_point(const Tensor2& F, const Vector3&, PointState& state,
-                                     PointResponse& response) const
+void NeoHookeanPlastic::update_point(const Tensor2& F, const Vector3&, std::uint8_t&,
+                                     PlasticHistory& history, PointResponse& response) const
 {
   const double J = F.determinant();
   if (!(J > 0.0) || !std::isfinite(J))
     throw_inverted(J);
-  const PlasticReturn<double> r = return_map(F, state);
+  const PlasticReturn<double> r = return_map(F, history);
   const double flow_stress = prm.yield_stress + prm.hardening_modulus * r.equivalent_plastic_strain;
 
   if (r.plastic_multiplier > 0.0)
   {
     const Tensor2 F_bar_inverse = std::cbrt(J) * F.inverse();
-    state.inverse_plastic_cauchy_green =
+    history.inverse_plastic_cauchy_green =
         to_voigt(F_bar_inverse * r.elastic_b_bar * F_bar_inverse.transpose());
   }
-  state.equivalent_plastic_strain = r.equivalent_plastic_strain;
+  history.equivalent_plastic_strain = r.equivalent_plastic_strain;
 
   const double trace_b = r.elastic_b_bar.trace();
   const double K = prm.bulk_modulus;
@@ -150,7 +150,7 @@ Tangent NeoHookeanPlastic::tangent(const Tensor2& F, const Vector3&, const Point
     {
       Matrix3<Dual> F_seeded = F_dual;
       F_seeded(k, L).d = 1.0;
-      const PlasticReturn<Dual> r = return_map(F_seeded, state);
+      const PlasticReturn<Dual> r = return_map(F_seeded, state.plastic);
       // P = tau F^{-T}
       const Matrix3<Dual> P = r.kirchhoff_stress * F_seeded.inverse().transpose();
       for (int i = 0; i < 3; ++i)

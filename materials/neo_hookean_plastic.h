@@ -37,16 +37,17 @@ public:
   explicit NeoHookeanPlastic(const ElasticPlasticParameters& parameters);
 
   std::string model_name() const override { return "elastic plastic"; }
+  bool has_plastic_history() const override { return true; }
 
-  void update_point(const Tensor2& F, const Vector3& a0, PointState& state,
-                    PointResponse& response) const;
+  void update_point(const Tensor2& F, const Vector3& a0, std::uint8_t& failure,
+                    PlasticHistory& history, PointResponse& response) const;
 
   Tangent tangent(const Tensor2& F, const Vector3& a0, const PointState& state) const override;
 
   /// Return map from the stored state (state unchanged); Scalar is double or Dual.
   template <typename Scalar>
   PlasticReturn<Scalar> return_map(const Eigen::Matrix<Scalar, 3, 3>& F,
-                                   const PointState& state) const;
+                                   const PlasticHistory& history) const;
 
   const ElasticPlasticParameters& parameters() const { return prm; }
 

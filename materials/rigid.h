@@ -14,7 +14,8 @@ public:
   std::string model_name() const override { return "rigid"; }
   bool is_rigid() const override { return true; }
 
-  void update_point(const Tensor2&, const Vector3&, PointState&, PointResponse& response) const
+  void update_point(const Tensor2&, const Vector3&, std::uint8_t&, PlasticHistory&,
+                    PointResponse& response) const
   {
     response = PointResponse();
   }

@@ -186,13 +186,14 @@ double TissueHyperelastic<with_fibers>::p_wave_modulus(const Tensor2& F, const V
 
 template <bool with_fibers>
 void TissueHyperelastic<with_fibers>::update_point(const Tensor2& F, const Vector3& a0,
-                                                   PointState& state, PointResponse& response) const
+                                                   std::uint8_t& failure, PlasticHistory&,
+                                                   PointResponse& response) const
 {
   const double J = F.determinant();
   if (!(J > 0.0) || !std::isfinite(J))
     throw_inverted(J);
 
-  const std::uint8_t old_flags = state.failure;
+  const std::uint8_t old_flags = failure;
   std::uint8_t flags = updated_failure_flags(prm.failure, F, a0, with_fibers, old_flags);
   if (!with_fibers && (flags & matrix_failed))
     flags |= fiber_failed; // without fibers the failed matrix leaves nothing: total failure
@@ -216,7 +217,7 @@ void TissueHyperelastic<with_fibers>::update_point(const Tensor2& F, const Vecto
     parts.fibers.setZero();
   }
 
-  state.failure = flags;
+  failure = flags;
   response.cauchy_stress = (parts.volumetric + parts.matrix + parts.fibers) / J;
   response.energy_density = parts.volumetric_energy + parts.matrix_energy + parts.fiber_energy;
   response.dissipated_density = dissipated;

@@ -61,8 +61,8 @@ public:
   std::string model_name() const override;
   bool uses_fibers() const override { return with_fibers; }
 
-  void update_point(const Tensor2& F, const Vector3& a0, PointState& state,
-                    PointResponse& response) const;
+  void update_point(const Tensor2& F, const Vector3& a0, std::uint8_t& failure,
+                    PlasticHistory& unused, PointResponse& response) const;
 
   /// Exact dP/dF (forward-mode dual numbers through the stress) with the failure flags
   /// of state frozen.

@@ -98,16 +98,25 @@ void visit_body_points(const SceneParameters& scene, const Grid& grid,
 }
 
 void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles,
+                  const std::vector<char>& plastic_history,
                   const std::function<bool(const Vector3&)>& keep)
 {
+  auto plastic = [&plastic_history](std::size_t b)
+  { return b < plastic_history.size() && plastic_history[b]; };
   // Counted first so that every array is allocated once (growing them by doubling would
   // leave the old copies in the resident set).
-  std::size_t n_stored = particles.size();
-  visit_body_points(scene, grid, [&](const Vector3& x) { n_stored += !keep || keep(x); });
-  particles.reserve(n_stored);
+  std::size_t n_stored = particles.size(), n_plastic = particles.plastic_pool.size();
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    for_each_point_of(scene.bodies[b], grid, [&](const Vector3& x) {
+      const bool stored = !keep || keep(x);
+      n_stored += stored;
+      n_plastic += stored && plastic(b);
+    });
+  particles.reserve(n_stored, n_plastic);
   std::uint32_t next_id = 0;
-  for (const BodyParameters& body : scene.bodies)
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
   {
+    const BodyParameters& body = scene.bodies[b];
     particles.start_body();
     const double spacing = grid.cell_size() / body.particles_per_cell;
     const double volume = spacing * spacing * spacing;
@@ -117,7 +126,7 @@ void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& par
       if (keep && !keep(x))
         return;
       particles.append(x, body.initial_velocity, body.density * volume, volume,
-                       materials::fiber_direction(body.fibers, x));
+                       materials::fiber_direction(body.fibers, x), plastic(b));
       particles.id.back() = id;
     });
     particles.finish_body();

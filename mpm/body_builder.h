@@ -20,8 +20,10 @@ void body_bounding_box(const BodyParameters& body, Vector3& lower, Vector3& uppe
 /// the centres of the n^3 sub-cells of every grid cell whose sub-cell centre is inside the
 /// shape. Throws std::invalid_argument when a body has no point (smaller than a sub-cell).
 /// With `keep`, only the points where keep(x) holds are stored (one rank's slab); a point's
-/// id is its index among all points either way.
+/// id is its index among all points either way. Points of body b get a plastic history when
+/// plastic_history[b] is set (the vector may be empty: none).
 void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles,
+                  const std::vector<char>& plastic_history = {},
                   const std::function<bool(const Vector3&)>& keep = {});
 
 /// Calls visit(x) for every point build_bodies creates, in the same order, storing nothing.

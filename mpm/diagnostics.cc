@@ -38,7 +38,7 @@ SceneDiagnostics compute_diagnostics(const Particles& particles, const Vector3& 
       const double along = x.dot(direction);
       lo = std::min(lo, along);
       hi = std::max(hi, along);
-      switch (particles.state[p].failure)
+      switch (particles.failure[p])
       {
         case 0: ++c0; break;
         case 1: ++c1; break;

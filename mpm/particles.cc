@@ -3,13 +3,14 @@
 
 namespace vulnus::mpm
 {
-void Particles::reserve(const std::size_t n)
+void Particles::reserve(const std::size_t n, const std::size_t n_plastic)
 {
   for_each_array([n](auto& values) { values.reserve(n); });
+  plastic_pool.reserve(n_plastic);
 }
 
 void Particles::append(const Vector3& x, const Vector3& v, const double m, const double volume,
-                       const Vector3& fiber)
+                       const Vector3& fiber, const bool plastic_history)
 {
   id.push_back(static_cast<std::uint32_t>(position.size()));
   position.push_back(x);
@@ -20,7 +21,13 @@ void Particles::append(const Vector3& x, const Vector3& v, const double m, const
   mass.push_back(m);
   reference_volume.push_back(volume);
   fiber_direction.push_back(fiber);
-  state.emplace_back();
+  failure.push_back(materials::intact);
+  plastic_slot.emplace_back();
+  if (plastic_history)
+  {
+    plastic_slot.back().index = static_cast<std::uint32_t>(plastic_pool.size());
+    plastic_pool.emplace_back();
+  }
   energy_density.push_back(0.0);
   dissipated_density.push_back(0.0);
   wave_speed.push_back(0.0);
@@ -76,11 +83,31 @@ void Particles::keep_only(const std::vector<char>& keep)
       values.resize(w);
     });
   body_begin = new_begin;
+  compact_plastic_pool();
 }
 
 void Particles::permute(const std::vector<std::uint32_t>& order)
 {
   std::vector<char> done;
   for_each_array([&](auto& values) { apply_order_in_place(values, order, done); });
+  compact_plastic_pool();
+}
+
+void Particles::compact_plastic_pool()
+{
+  std::size_t n_live = 0;
+  for (const materials::PlasticSlot& slot : plastic_slot)
+    n_live += slot.index != materials::PlasticSlot::none;
+  if (n_live == 0 && plastic_pool.empty())
+    return;
+  std::vector<materials::PlasticHistory> compacted;
+  compacted.reserve(n_live);
+  for (materials::PlasticSlot& slot : plastic_slot)
+    if (slot.index != materials::PlasticSlot::none)
+    {
+      compacted.push_back(plastic_pool[slot.index]);
+      slot.index = static_cast<std::uint32_t>(compacted.size() - 1);
+    }
+  plastic_pool = std::move(compacted);
 }
 } // namespace vulnus::mpm

@@ -1,6 +1,7 @@
 // Material points stored as arrays (structure of arrays). Points of one body are kept
 // contiguous (body_begin) so material updates dispatch once per body; within a body they are
-// sorted by grid cell now and then for cache locality.
+// sorted by grid cell now and then for cache locality. Plastic histories (56 B) exist only for
+// the points of elastic-plastic bodies, in a pool the points refer to by slot.
 #pragma once
 
 #include "materials/material.h"
@@ -45,11 +46,16 @@ struct Particles
   std::vector<double> mass;
   std::vector<double> reference_volume;
   std::vector<Vector3> fiber_direction; ///< reference unit fiber a0 (bodies with fibers)
-  std::vector<materials::PointState> state;
+  std::vector<std::uint8_t> failure; ///< materials::FailureFlag bits
+  /// Where the point's plastic history is in plastic_pool (none for laws without one).
+  std::vector<materials::PlasticSlot> plastic_slot;
   std::vector<double> energy_density;      ///< J per reference m^3, unfailed parts
   std::vector<double> dissipated_density;  ///< accumulated J per reference m^3
   std::vector<double> wave_speed;          ///< m/s, from the last stress update
   std::vector<std::uint32_t> id;           ///< stable identifier, survives sorting
+  /// Not per point: the histories plastic_slot refers to, in no particular order; entries of
+  /// points that left stay until the next compaction (permute, keep_only).
+  std::vector<materials::PlasticHistory> plastic_pool;
 
   /// Body b owns the index range [body_begin[b], body_begin[b+1]).
   std::vector<std::size_t> body_begin{0};
@@ -66,23 +72,40 @@ struct Particles
            1;
   }
 
-  void reserve(std::size_t n);
-  /// Appends one point to the last body (call start_body first).
+  /// Room for n points, n_plastic of them with a plastic history.
+  void reserve(std::size_t n, std::size_t n_plastic = 0);
+  /// Appends one point to the last body (call start_body first), with a fresh plastic
+  /// history when plastic_history is set.
   void append(const Vector3& x, const Vector3& v, double m, double volume,
-              const Vector3& fiber);
+              const Vector3& fiber, bool plastic_history = false);
+  /// The plastic history of point p, or null.
+  materials::PlasticHistory* plastic_of(std::size_t p)
+  {
+    const std::uint32_t slot = plastic_slot[p].index;
+    return slot == materials::PlasticSlot::none ? nullptr : &plastic_pool[slot];
+  }
+  const materials::PlasticHistory* plastic_of(std::size_t p) const
+  {
+    return const_cast<Particles&>(*this).plastic_of(p);
+  }
+  /// Rebuilds plastic_pool in point order without the entries no point refers to.
+  void compact_plastic_pool();
   /// Opens a new body; points appended from now on belong to it.
   void start_body() { body_begin.push_back(size()); }
   /// Closes the last body (records its end).
   void finish_body() { body_begin.back() = size(); }
 
-  /// Removes the points whose keep flag is 0, preserving order and body ranges.
+  /// Removes the points whose keep flag is 0, preserving order and body ranges (and compacts
+  /// the plastic pool).
   void keep_only(const std::vector<char>& keep);
 
   /// Reorders every array by `order` (new index i takes old index order[i]) in place: 1 byte
-  /// of scratch per point instead of a copy of the largest array.
+  /// of scratch per point instead of a copy of the largest array. Compacts the plastic pool
+  /// into the new point order.
   void permute(const std::vector<std::uint32_t>& order);
 
-  /// Calls f on each per-point array (not body_begin), always in the same order.
+  /// Calls f on each per-point array (not body_begin, not plastic_pool), always in the same
+  /// order.
   template <class F>
   void for_each_array(F&& f)
   {
@@ -94,7 +117,8 @@ struct Particles
     f(mass);
     f(reference_volume);
     f(fiber_direction);
-    f(state);
+    f(failure);
+    f(plastic_slot);
     f(energy_density);
     f(dissipated_density);
     f(wave_speed);

@@ -49,7 +49,24 @@ Particles gather(const std::vector<const Particles*>& sources, const std::vector
       ++k;
     });
   result.body_begin = std::move(body_begin);
+  // The plastic histories follow their points into the result's own pool.
+  for (std::size_t i = 0; i < picks.size(); ++i)
+  {
+    materials::PlasticSlot& slot = result.plastic_slot[i];
+    if (slot.index == materials::PlasticSlot::none)
+      continue;
+    result.plastic_pool.push_back(sources[picks[i].source]->plastic_pool[slot.index]);
+    slot.index = static_cast<std::uint32_t>(result.plastic_pool.size() - 1);
+  }
   return result;
+}
+
+/// Throws when a point refers to a plastic history the container does not hold.
+void check_plastic_slots(const Particles& points)
+{
+  for (const materials::PlasticSlot& slot : points.plastic_slot)
+    if (slot.index != materials::PlasticSlot::none && slot.index >= points.plastic_pool.size())
+      throw std::runtime_error("point transfer: a point refers to a missing plastic history");
 }
 
 class ByteReader
@@ -98,20 +115,21 @@ std::vector<Particles> split_by_destination(const Particles& points,
 std::vector<char> to_bytes(const Particles& points)
 {
   std::vector<char> bytes;
-  const std::uint64_t counts[2] = {points.n_bodies(), points.size()};
-  append_bytes(bytes, counts, 2);
+  const std::uint64_t counts[3] = {points.n_bodies(), points.size(), points.plastic_pool.size()};
+  append_bytes(bytes, counts, 3);
   append_bytes(bytes, points.body_begin.data(), points.body_begin.size());
   points.for_each_array([&bytes](const auto& values)
                         { append_bytes(bytes, values.data(), values.size()); });
+  append_bytes(bytes, points.plastic_pool.data(), points.plastic_pool.size());
   return bytes;
 }
 
 Particles from_bytes(const char* data, const std::size_t size)
 {
   ByteReader reader(data, size);
-  std::uint64_t counts[2] = {0, 0};
-  reader.read(counts, 2);
-  if (counts[0] > 1000 || counts[1] > size)
+  std::uint64_t counts[3] = {0, 0, 0};
+  reader.read(counts, 3);
+  if (counts[0] > 1000 || counts[1] > size || counts[2] > size)
     throw std::runtime_error("point transfer: implausible header");
   Particles points;
   points.body_begin.resize(counts[0] + 1);
@@ -122,8 +140,11 @@ Particles from_bytes(const char* data, const std::size_t size)
       values.resize(counts[1]);
       reader.read(values.data(), values.size());
     });
+  points.plastic_pool.resize(counts[2]);
+  reader.read(points.plastic_pool.data(), points.plastic_pool.size());
   if (!reader.at_end() || points.body_begin.back() != counts[1])
     throw std::runtime_error("point transfer: message size does not match its contents");
+  check_plastic_slots(points);
   return points;
 }
 
@@ -266,9 +287,19 @@ void exchange_in_place(Particles& points, const std::vector<char>& keep,
       using Values = std::decay_t<decltype(values)>;
       values.resize(std::max(values.size(), n_new));
       for (const ElementCopy& c : copies)
+      {
         values[c.to] = c.source == 0
                          ? values[c.from]
                          : (*static_cast<const Values*>(sources[c.source - 1][k]))[c.from];
+        // An arrival brings its plastic history into the pool as it lands (later copies in
+        // the list may move it again).
+        if constexpr (std::is_same_v<Values, std::vector<materials::PlasticSlot>>)
+          if (c.source != 0 && values[c.to].index != materials::PlasticSlot::none)
+          {
+            points.plastic_pool.push_back(incoming[c.source - 1].plastic_pool[values[c.to].index]);
+            values[c.to].index = static_cast<std::uint32_t>(points.plastic_pool.size() - 1);
+          }
+      }
       values.resize(n_new);
       ++k;
     });

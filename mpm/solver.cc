@@ -39,11 +39,14 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   // A distributed run cuts the slabs from the points' positions first, then each rank builds
   // only the points of its own slab.
   plan_slabs();
+  std::vector<char> plastic_history;
+  for (const materials::Material* material : materials_of_body)
+    plastic_history.push_back(material->has_plastic_history());
   if (ranks.distributed())
-    build_bodies(scene, grid, particles, [this](const Vector3& x)
+    build_bodies(scene, grid, particles, plastic_history, [this](const Vector3& x)
                  { return partition.rank_of_position(grid, x) == ranks.rank(); });
   else
-    build_bodies(scene, grid, particles);
+    build_bodies(scene, grid, particles, plastic_history);
 
   transfer.shape = scene.shape_function;
   for (const BodyParameters& body : scene.bodies)

@@ -4,6 +4,7 @@
 
 #include "mpm/binary_io.h"
 
+#include <algorithm>
 #include <istream>
 #include <ostream>
 
@@ -13,7 +14,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '3'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '4'};
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -22,6 +23,7 @@ void Solver::save(std::ostream& out) const
   put(out, static_cast<std::uint64_t>(parameters.bodies.size()));
   put_vector(out, particles.body_begin);
   particles.for_each_array([&out](const auto& values) { put_vector(out, values); });
+  put_vector(out, particles.plastic_pool);
   put_vector(out, grid_settings.rigid_velocity);
   put_vector(out, peak_yield_ratio);
   put(out, current_time);
@@ -51,6 +53,7 @@ void Solver::restore(std::istream& in)
   Particles loaded;
   get_vector(in, loaded.body_begin);
   loaded.for_each_array([&in](auto& values) { get_vector(in, values); });
+  get_vector(in, loaded.plastic_pool);
   std::vector<Vector3> rigid_velocity;
   std::vector<double> peak;
   get_vector(in, rigid_velocity);
@@ -74,10 +77,24 @@ void Solver::restore(std::istream& in)
   get_vector(in, first_layers);
   expect_tag(in, magic, "checkpoint is incomplete (no trailer)");
   const std::size_t n = loaded.position.size();
-  if (loaded.body_begin.size() != n_bodies + 1 || loaded.body_begin.back() != n ||
-      loaded.state.size() != n || loaded.id.size() != n || rigid_velocity.size() != n_bodies ||
-      peak.size() != n_bodies)
+  bool sizes_agree = loaded.body_begin.size() == n_bodies + 1 && loaded.body_begin.back() == n &&
+                     loaded.body_begin.front() == 0 &&
+                     std::is_sorted(loaded.body_begin.begin(), loaded.body_begin.end()) &&
+                     rigid_velocity.size() == n_bodies && peak.size() == n_bodies;
+  loaded.for_each_array([&](const auto& values) { sizes_agree = sizes_agree && values.size() == n; });
+  if (!sizes_agree)
     throw std::runtime_error("checkpoint is inconsistent (array sizes differ)");
+  for (std::size_t b = 0; b < n_bodies; ++b)
+  {
+    const bool plastic = materials_of_body[b]->has_plastic_history();
+    for (std::size_t p = loaded.begin_of(b); p < loaded.end_of(b); ++p)
+    {
+      const std::uint32_t slot = loaded.plastic_slot[p].index;
+      if (plastic ? slot >= loaded.plastic_pool.size() : slot != materials::PlasticSlot::none)
+        throw std::runtime_error("checkpoint is inconsistent (plastic histories of body " +
+                                 parameters.bodies[b].name + ")");
+    }
+  }
 
   if (n_ranks != static_cast<std::uint64_t>(ranks.size()))
     throw std::runtime_error("checkpoint was written by " + std::to_string(n_ranks) +

@@ -22,10 +22,10 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
   while (run_begin < end)
   {
     // A run of points that still carry stress.
-    while (run_begin < end && particles.state[run_begin].failure == materials::total_failure)
+    while (run_begin < end && particles.failure[run_begin] == materials::total_failure)
       ++run_begin;
     long run_end = run_begin;
-    while (run_end < end && particles.state[run_end].failure != materials::total_failure)
+    while (run_end < end && particles.failure[run_end] != materials::total_failure)
       ++run_end;
     if (run_begin == run_end)
       break;
@@ -33,7 +33,12 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
     block.n_points = static_cast<std::size_t>(run_end - run_begin);
     block.deformation_gradients = &particles.deformation_gradient[run_begin];
     block.fiber_directions = material.uses_fibers() ? &particles.fiber_direction[run_begin] : nullptr;
-    block.states = &particles.state[run_begin];
+    block.failure = &particles.failure[run_begin];
+    if (material.has_plastic_history())
+    {
+      block.plastic = particles.plastic_pool.data();
+      block.plastic_slots = &particles.plastic_slot[run_begin];
+    }
     block.responses = responses.data();
     material.update_block(block);
     for (long p = run_begin; p < run_end; ++p)
@@ -61,7 +66,7 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
       particles.dissipated_density[p] += dissipated;
       particles.wave_speed[p] = wave_speed;
       max_ratio = std::max(max_ratio, r.von_mises_over_yield);
-      if (particles.state[p].failure == materials::total_failure)
+      if (particles.failure[p] == materials::total_failure)
         particles.stress[p].setZero();
     }
     run_begin = run_end;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
@@ -21,7 +22,9 @@ struct Block
 {
   std::vector<Tensor2> F;
   std::vector<Vector3> a0;
-  std::vector<PointState> states;
+  std::vector<std::uint8_t> failure;
+  std::vector<PlasticHistory> plastic;
+  std::vector<PlasticSlot> slots;
   std::vector<PointResponse> responses;
 };
 
@@ -34,13 +37,16 @@ Block make_block(const std::size_t n, const double amplitude)
   Block b;
   b.F.resize(n);
   b.a0.resize(n);
-  b.states.resize(n);
+  b.failure.resize(n);
+  b.plastic.resize(n);
+  b.slots.resize(n);
   b.responses.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {
     for (int k = 0; k < 9; ++k)
       b.F[i](k / 3, k % 3) = (k % 4 == 0 ? 1.0 : 0.0) + amplitude * uniform(rng);
     b.a0[i] = Vector3(normal(rng), normal(rng), normal(rng)).normalized();
+    b.slots[i].index = static_cast<std::uint32_t>(i);
   }
   return b;
 }
@@ -51,8 +57,15 @@ double time_updates(const Material& material, Block& b, const int repeats)
   double best = 1e300;
   for (int r = 0; r < repeats; ++r)
   {
-    std::fill(b.states.begin(), b.states.end(), PointState());
-    const PointBlock block{b.F.size(), b.F.data(), b.a0.data(), b.states.data(),
+    std::fill(b.failure.begin(), b.failure.end(), std::uint8_t(intact));
+    std::fill(b.plastic.begin(), b.plastic.end(), PlasticHistory());
+    const bool plastic = material.has_plastic_history();
+    const PointBlock block{b.F.size(),
+                           b.F.data(),
+                           b.a0.data(),
+                           b.failure.data(),
+                           plastic ? b.plastic.data() : nullptr,
+                           plastic ? b.slots.data() : nullptr,
                            b.responses.data()};
     const auto start = std::chrono::steady_clock::now();
     material.update_block(block);
@@ -118,10 +131,10 @@ int main(int argc, char** argv)
     const double update_ns = time_updates(*material, block, repeats);
     const double tangent_ns = time_tangents(*material, block, std::min<std::size_t>(n, 100000));
     std::size_t n_plastic = 0, n_failed = 0;
-    for (const PointState& s : block.states)
+    for (std::size_t i = 0; i < n; ++i)
     {
-      n_plastic += s.equivalent_plastic_strain > 0.0;
-      n_failed += s.failure != 0;
+      n_plastic += block.plastic[i].equivalent_plastic_strain > 0.0;
+      n_failed += block.failure[i] != 0;
     }
     std::printf("%-34s %12.1f %14.1f   (plastic %zu, failed %zu)\n", c.label.c_str(), update_ns,
                 tangent_ns, n_plastic, n_failed);

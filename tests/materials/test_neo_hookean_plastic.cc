@@ -62,7 +62,7 @@ TEST(NeoHookeanPlastic, YieldsAtYieldStressInUniaxialTensionAndHardensLinearly)
     const double J = l * t * t;
     const double tau_xx = J * r.cauchy_stress(0, 0); // Kirchhoff, the yield function's stress
     ASSERT_LT(std::abs(r.cauchy_stress(1, 1)), 1e-2);
-    if (state.equivalent_plastic_strain > 0.0)
+    if (state.plastic.equivalent_plastic_strain > 0.0)
     {
       if (!yielded)
       {
@@ -72,12 +72,12 @@ TEST(NeoHookeanPlastic, YieldsAtYieldStressInUniaxialTensionAndHardensLinearly)
         yielded = true;
       }
       // Uniaxial: von Mises = tau_xx = sigma_y + H alpha while flowing.
-      EXPECT_NEAR(tau_xx, p.yield_stress + p.hardening_modulus * state.equivalent_plastic_strain,
+      EXPECT_NEAR(tau_xx, p.yield_stress + p.hardening_modulus * state.plastic.equivalent_plastic_strain,
                   10.0);
       EXPECT_NEAR(r.von_mises_over_yield, 1.0, 1e-9);
       if (++n_plastic > 2)
       {
-        EXPECT_NEAR((tau_xx - previous_tau) / (state.equivalent_plastic_strain - previous_alpha),
+        EXPECT_NEAR((tau_xx - previous_tau) / (state.plastic.equivalent_plastic_strain - previous_alpha),
                     p.hardening_modulus, 1e-4 * p.hardening_modulus);
         // Small-strain elastoplastic modulus E H / (E + H), E = 9 K mu / (3 K + mu).
         const double E =
@@ -92,7 +92,7 @@ TEST(NeoHookeanPlastic, YieldsAtYieldStressInUniaxialTensionAndHardensLinearly)
       EXPECT_EQ(r.dissipated_density, 0.0);
     }
     previous_tau = tau_xx;
-    previous_alpha = state.equivalent_plastic_strain;
+    previous_alpha = state.plastic.equivalent_plastic_strain;
     previous_log = std::log(l);
   }
   EXPECT_TRUE(yielded);
@@ -110,7 +110,7 @@ TEST(NeoHookeanPlastic, ElasticUnloadingAndDissipation)
     const PointResponse r = uniaxial_stress_update(bullet, 1.0 + 2.5e-5 * k, t, state);
     dissipated += r.dissipated_density;
   }
-  const double alpha = state.equivalent_plastic_strain;
+  const double alpha = state.plastic.equivalent_plastic_strain;
   ASSERT_GT(alpha, 1e-3);
   // Plastic work = int (sigma_y + H a) da (backward Euler: exact up to H dalpha^2 / 2).
   const double expected = p.yield_stress * alpha + 0.5 * p.hardening_modulus * alpha * alpha;
@@ -129,7 +129,7 @@ TEST(NeoHookeanPlastic, ElasticUnloadingAndDissipation)
     {
       EXPECT_NEAR((previous_sigma - r.cauchy_stress(0, 0)) / 2e-5, E, 0.03 * E);
     }
-    EXPECT_EQ(state.equivalent_plastic_strain, alpha);
+    EXPECT_EQ(state.plastic.equivalent_plastic_strain, alpha);
     EXPECT_EQ(r.dissipated_density, 0.0);
     previous_sigma = r.cauchy_stress(0, 0);
     l -= 2e-5;
@@ -149,7 +149,7 @@ TEST(NeoHookeanPlastic, YieldsAtShearYieldStressInSimpleShear)
     PointResponse r;
     bullet.update(F, Vector3::UnitX(), state, r);
     const double von_mises_from_shear = std::sqrt(3.0) * r.cauchy_stress(0, 1); // J = 1
-    if (state.equivalent_plastic_strain > 0.0)
+    if (state.plastic.equivalent_plastic_strain > 0.0)
     {
       EXPECT_LE(previous, p.yield_stress);
       EXPECT_NEAR(von_mises_from_shear, p.yield_stress, 1e-3 * p.yield_stress);
@@ -189,14 +189,14 @@ TEST(NeoHookeanPlastic, PlasticFlowPreservesVolumeAndIsObjective)
     const Tensor2 expected = Q * r1.cauchy_stress * Q.transpose();
     EXPECT_LT((r2.cauchy_stress - expected).cwiseAbs().maxCoeff(),
               1e-9 * r1.cauchy_stress.cwiseAbs().maxCoeff());
-    EXPECT_NEAR(rotated.equivalent_plastic_strain, reference.equivalent_plastic_strain, 1e-12);
-    EXPECT_NEAR(from_voigt(reference.inverse_plastic_cauchy_green).determinant(), 1.0, 1e-12);
+    EXPECT_NEAR(rotated.plastic.equivalent_plastic_strain, reference.plastic.equivalent_plastic_strain, 1e-12);
+    EXPECT_NEAR(from_voigt(reference.plastic.inverse_plastic_cauchy_green).determinant(), 1.0, 1e-12);
     // b_e~ = F~ C_p~^{-1} F~^T is then isochoric too.
     const Tensor2 F_bar = std::cbrt(1.0 / F.determinant()) * F;
-    EXPECT_NEAR((F_bar * from_voigt(reference.inverse_plastic_cauchy_green) * F_bar.transpose())
+    EXPECT_NEAR((F_bar * from_voigt(reference.plastic.inverse_plastic_cauchy_green) * F_bar.transpose())
                   .determinant(), 1.0, 1e-12);
   }
-  EXPECT_GT(reference.equivalent_plastic_strain, 0.3);
+  EXPECT_GT(reference.plastic.equivalent_plastic_strain, 0.3);
 }
 
 TEST(NeoHookeanPlastic, TangentMatchesFiniteDifferences)
@@ -212,7 +212,7 @@ TEST(NeoHookeanPlastic, TangentMatchesFiniteDifferences)
     {
       const Tangent D = bullet.tangent(G, Vector3::UnitX(), state);
       auto P = [&](const Tensor2& H) {
-        return testing::first_piola(bullet.return_map(H, state).kirchhoff_stress / H.determinant(),
+        return testing::first_piola(bullet.return_map(H, state.plastic).kirchhoff_stress / H.determinant(),
                                     H);
       };
       const Tangent D_fd = testing::finite_difference_tangent(P, G, 1e-7);

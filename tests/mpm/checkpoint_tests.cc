@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 
 using namespace vulnus;
@@ -12,13 +13,21 @@ using mpm::Vector3;
 
 namespace
 {
-mpm::SceneParameters impact_scene()
+/// A ball hitting a gel slab; the ball is rigid or (plastic_ball) a soft elastic-plastic
+/// metal that yields at the impact.
+mpm::SceneParameters impact_scene(const bool plastic_ball = false)
 {
   mpm::SceneParameters scene = test::empty_scene(Vector3(-8e-3, -8e-3, -8e-3), Vector3(8e-3, 14e-3, 8e-3), 1e-3);
   mpm::NamedMaterial gel = test::elastic_material("gel", 2e5, 2.1e3);
   gel.parameters.tissue.failure.enabled = true;
   scene.materials.push_back(gel);
-  scene.materials.push_back(test::rigid_material("steel"));
+  mpm::NamedMaterial steel = test::rigid_material("steel");
+  if (plastic_ball)
+  {
+    steel.parameters.model = "elastic plastic";
+    steel.parameters.elastic_plastic = {1e8, 5e7, 1e5, 1e5};
+  }
+  scene.materials.push_back(steel);
   scene.bodies.push_back(test::box_body("slab", "gel", Vector3(-8e-3, 0, -8e-3), Vector3(8e-3, 4e-3, 8e-3), 1060.0, 2));
   mpm::BodyParameters ball = test::sphere_body("ball", "steel", Vector3(0, -3e-3, 0), 2.5e-3, 8930.0, 2);
   ball.initial_velocity = Vector3(0, 60, 0);
@@ -29,9 +38,16 @@ mpm::SceneParameters impact_scene()
 }
 } // namespace
 
-TEST(MpmCheckpoint, RestoredRunContinuesBitForBit)
+class MpmCheckpointBall : public ::testing::TestWithParam<bool>
 {
-  const mpm::SceneParameters scene = impact_scene();
+};
+
+// With a rigid ball, and with an elastic-plastic one whose plastic histories (kept only for
+// its points, in a pool) must survive the checkpoint and the sorts before and after it.
+TEST_P(MpmCheckpointBall, RestoredRunContinuesBitForBit)
+{
+  const bool plastic_ball = GetParam();
+  const mpm::SceneParameters scene = impact_scene(plastic_ball);
   mpm::Solver reference(scene);
   for (int i = 0; i < 20; ++i)
     reference.advance();
@@ -47,17 +63,32 @@ TEST(MpmCheckpoint, RestoredRunContinuesBitForBit)
     restarted.advance();
 
   ASSERT_EQ(reference.points().size(), restarted.points().size());
+  double most_plastic = 0.0;
   EXPECT_EQ(reference.time(), restarted.time());
   for (std::size_t p = 0; p < reference.points().size(); ++p)
   {
     ASSERT_EQ(reference.points().id[p], restarted.points().id[p]);
     EXPECT_EQ(reference.points().position[p], restarted.points().position[p]);
     EXPECT_EQ(reference.points().velocity[p], restarted.points().velocity[p]);
-    EXPECT_EQ(reference.points().state[p].failure, restarted.points().state[p].failure);
+    EXPECT_EQ(reference.points().failure[p], restarted.points().failure[p]);
+    const materials::PlasticHistory* history = reference.points().plastic_of(p);
+    ASSERT_EQ(history != nullptr, restarted.points().plastic_of(p) != nullptr);
+    ASSERT_EQ(history != nullptr, plastic_ball && p >= reference.points().begin_of(1));
+    if (history)
+    {
+      EXPECT_EQ(history->equivalent_plastic_strain,
+                restarted.points().plastic_of(p)->equivalent_plastic_strain);
+      most_plastic = std::max(most_plastic, history->equivalent_plastic_strain);
+    }
   }
+  if (plastic_ball)
+    EXPECT_GT(most_plastic, 1e-3) << "the ball should yield, or the test checks nothing";
   EXPECT_EQ(reference.diagnostics().bodies[1].velocity, restarted.diagnostics().bodies[1].velocity);
   EXPECT_EQ(reference.contact_dissipation(), restarted.contact_dissipation());
 }
+
+INSTANTIATE_TEST_SUITE_P(Ball, MpmCheckpointBall, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "ElasticPlastic" : "Rigid"; });
 
 TEST(MpmCheckpoint, TruncatedOrForeignCheckpointsAreRefused)
 {

@@ -8,6 +8,7 @@
 #include <mpi.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -18,15 +19,21 @@ namespace
 {
 /// Two gel spheres flying through each other's slabs along x; with contact they collide.
 /// Without contact they would translate rigidly (no stress, the same nodal velocities
-/// whoever sums them), so breathing() gives them a deformation.
-mpm::SceneParameters crossing_spheres(const bool contact)
+/// whoever sums them), so breathing() gives them a deformation. With plastic_a, sphere a is a
+/// soft elastic-plastic solid that yields while breathing: its plastic histories migrate.
+mpm::SceneParameters crossing_spheres(const bool contact, const bool plastic_a = false)
 {
   mpm::SceneParameters scene =
     test::empty_scene(Vector3(-12e-3, -6e-3, -6e-3), Vector3(12e-3, 6e-3, 6e-3), 1e-3);
   mpm::NamedMaterial gel = test::elastic_material("gel", 1e5, 1e4);
   gel.parameters.tissue.failure.enabled = true;
   scene.materials.push_back(gel);
-  scene.bodies.push_back(test::sphere_body("a", "gel", Vector3(-5e-3, 0, 0), 3e-3, 1000.0, 2));
+  mpm::NamedMaterial putty = test::elastic_material("putty", 1e5, 1e4);
+  putty.parameters.model = "elastic plastic";
+  putty.parameters.elastic_plastic = {1e5, 2e4, 500.0, 1e3};
+  scene.materials.push_back(putty);
+  scene.bodies.push_back(
+    test::sphere_body("a", plastic_a ? "putty" : "gel", Vector3(-5e-3, 0, 0), 3e-3, 1000.0, 2));
   scene.bodies.push_back(test::sphere_body("b", "gel", Vector3(5e-3, 0.5e-3, 0), 3e-3, 1000.0, 2));
   scene.bodies[0].initial_velocity = Vector3(20, 0, 0);
   scene.bodies[1].initial_velocity = Vector3(-20, 1, 0);
@@ -130,13 +137,33 @@ double largest_difference_from_one_process(const mpm::SceneParameters& scene, co
               1e-6 * std::abs(serial.contact_dissipation()) + 1e-15);
   EXPECT_EQ(distributed.contact_nodes(), serial.contact_nodes());
   const auto one = positions_by_id(serial.points());
-  const auto all = positions_by_id(distributed.gather_points());
+  const mpm::Particles gathered = distributed.gather_points();
+  const auto all = positions_by_id(gathered);
   double worst = 0.0;
   if (world_rank() == 0)
   {
     EXPECT_EQ(one.size(), all.size());
     for (const auto& [id, x] : all)
       worst = std::max(worst, (x - one.at(id)).norm());
+    // Plastic histories travelled with their points: the same plastic strain per point.
+    std::map<std::uint32_t, double> plastic_one;
+    for (std::size_t p = 0; p < serial.points().size(); ++p)
+      if (const auto* history = serial.points().plastic_of(p))
+        plastic_one[serial.points().id[p]] = history->equivalent_plastic_strain;
+    std::size_t n_plastic = 0;
+    for (std::size_t p = 0; p < gathered.size(); ++p)
+      if (const auto* history = gathered.plastic_of(p))
+      {
+        ++n_plastic;
+        EXPECT_NEAR(history->equivalent_plastic_strain, plastic_one.at(gathered.id[p]), 1e-10);
+      }
+    EXPECT_EQ(n_plastic, plastic_one.size());
+    if (!plastic_one.empty())
+      EXPECT_GT(std::max_element(plastic_one.begin(), plastic_one.end(),
+                                 [](const auto& a, const auto& b) { return a.second < b.second; })
+                  ->second,
+                1e-3)
+        << "sphere a should yield";
   }
   MPI_Bcast(&worst, 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
   return worst;
@@ -151,6 +178,8 @@ TEST(DistributedMpm, ReproducesTheOneProcessRun)
   // With contact, approach tests are discontinuous in the velocities: round-off can flip one
   // at a node where the bodies barely touch; bound 1e-3 of a cell, as for threads.
   EXPECT_LT(largest_difference_from_one_process(crossing_spheres(true), 40), 1e-6);
+  // An elastic-plastic sphere crossing the slabs: its histories migrate with its points.
+  EXPECT_LT(largest_difference_from_one_process(crossing_spheres(false, true), 40), 1e-12);
 }
 
 TEST(DistributedMpm, CheckpointRestartsOnTheSameRanks)

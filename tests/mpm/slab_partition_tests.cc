@@ -81,14 +81,17 @@ mpm::Particles two_bodies()
   {
     p.start_body();
     for (int i = 0; i < 5 + 3 * b; ++i)
-      p.append(Vector3(i, b, 0.5 * i), Vector3(-i, 2.0 * b, 1), 1.0 + i, 0.1 * (b + 1), Vector3::UnitX());
+      p.append(Vector3(i, b, 0.5 * i), Vector3(-i, 2.0 * b, 1), 1.0 + i, 0.1 * (b + 1), Vector3::UnitX(),
+               b == 1);
     p.finish_body();
   }
   for (std::size_t i = 0; i < p.size(); ++i)
   {
-    p.state[i].failure = static_cast<std::uint8_t>(i % 4);
+    p.failure[i] = static_cast<std::uint8_t>(i % 4);
     p.deformation_gradient[i](0, 1) = 0.01 * i;
     p.energy_density[i] = 3.0 * i;
+    if (auto* history = p.plastic_of(i))
+      history->equivalent_plastic_strain = 0.5 * i;
   }
   return p;
 }
@@ -117,28 +120,35 @@ TEST(PointTransfer, SplitBytesAndMergeKeepEveryPoint)
     EXPECT_EQ(merged.position[i], points.position[original]);
     EXPECT_EQ(merged.velocity[i], points.velocity[original]);
     EXPECT_EQ(merged.deformation_gradient[i], points.deformation_gradient[original]);
-    EXPECT_EQ(merged.state[i].failure, points.state[original].failure);
+    EXPECT_EQ(merged.failure[i], points.failure[original]);
     EXPECT_EQ(merged.energy_density[i], points.energy_density[original]);
     EXPECT_EQ(merged.mass[i], points.mass[original]);
     EXPECT_EQ(i < merged.end_of(0), original < points.end_of(0));
+    ASSERT_EQ(merged.plastic_of(i) != nullptr, i >= merged.end_of(0)); // body 1 only
+    if (merged.plastic_of(i))
+      EXPECT_EQ(merged.plastic_of(i)->equivalent_plastic_strain, 0.5 * original);
   }
 }
 
 namespace
 {
-/// Bodies of the given sizes; every field of a point is a function of its id.
+/// Bodies of the given sizes; every field of a point is a function of its id. The points of
+/// body 1 have a plastic history.
 mpm::Particles numbered_points(const std::vector<int>& sizes, std::uint32_t first_id)
 {
   mpm::Particles p;
   for (const int n : sizes)
   {
     p.start_body();
+    const bool plastic = p.n_bodies() == 2;
     for (int i = 0; i < n; ++i)
     {
       const double id = first_id + p.size();
-      p.append(Vector3(id, 0, 0), Vector3(0, id, 0), id, 2 * id, Vector3::UnitZ());
+      p.append(Vector3(id, 0, 0), Vector3(0, id, 0), id, 2 * id, Vector3::UnitZ(), plastic);
       p.id.back() = first_id + static_cast<std::uint32_t>(p.size() - 1);
       p.energy_density.back() = 3 * id;
+      if (plastic)
+        p.plastic_pool.back().equivalent_plastic_strain = 4 * id;
     }
     p.finish_body();
   }
@@ -194,8 +204,43 @@ TEST(PointTransfer, InPlaceExchangeEqualsTheCopyingMerge)
       ASSERT_EQ(result.mass[i], id);
       ASSERT_EQ(result.reference_volume[i], 2 * id);
       ASSERT_EQ(result.energy_density[i], 3 * id);
+      const bool in_plastic_body = result.body_of(i) == 1;
+      ASSERT_EQ(result.plastic_of(i) != nullptr, in_plastic_body) << "trial " << trial;
+      if (in_plastic_body)
+        ASSERT_EQ(result.plastic_of(i)->equivalent_plastic_strain, 4 * id) << "trial " << trial;
     }
   }
+}
+
+// Sorting and removing points compact the plastic pool: it then holds exactly the histories
+// of the remaining points, in point order.
+TEST(PointTransfer, PermuteAndRemovalCompactThePlasticPool)
+{
+  mpm::Particles p = numbered_points({4, 6, 3}, 0);
+  std::vector<std::uint32_t> order(p.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = static_cast<std::uint32_t>(i);
+  std::reverse(order.begin() + 4, order.begin() + 10); // reverses body 1
+  p.permute(order);
+  std::vector<char> keep(p.size(), 1);
+  keep[5] = keep[8] = 0;
+  p.keep_only(keep);
+  ASSERT_EQ(p.plastic_pool.size(), 4u);
+  for (std::size_t i = p.begin_of(1); i < p.end_of(1); ++i)
+  {
+    EXPECT_EQ(p.plastic_slot[i].index, i - p.begin_of(1));
+    EXPECT_EQ(p.plastic_of(i)->equivalent_plastic_strain, 4.0 * p.id[i]);
+  }
+  EXPECT_EQ(p.plastic_of(0), nullptr);
+  EXPECT_EQ(p.plastic_of(p.size() - 1), nullptr);
+}
+
+TEST(PointTransfer, AMessageReferringToAMissingPlasticHistoryIsRefused)
+{
+  mpm::Particles p = two_bodies();
+  p.plastic_slot.back().index = 1000;
+  const std::vector<char> bytes = mpm::to_bytes(p);
+  EXPECT_THROW(mpm::from_bytes(bytes.data(), bytes.size()), std::runtime_error);
 }
 
 TEST(PointTransfer, ATruncatedMessageIsRefused)

@@ -211,7 +211,7 @@ TEST(MpmVerification, MatrixFailureFlagsWhereTheShearStrainPassedTheLimit)
     const Eigen::Matrix3d C = pts.deformation_gradient[p].transpose() * pts.deformation_gradient[p];
     const Eigen::Vector3d e = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(C).eigenvalues();
     const double shear = 0.5 * (e.maxCoeff() - e.minCoeff()); // E1 - E3 of Green-Lagrange
-    const bool failed = pts.state[p].failure & 1;
+    const bool failed = pts.failure[p] & 1;
     n_failed += failed;
     // Stretching only grows: a failed point passed the limit (and stays past it up to the
     // unloading of its own stress), an intact point never reached it.

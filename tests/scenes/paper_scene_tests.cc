@@ -45,7 +45,7 @@ ShortRun run_briefly(const std::string& deck_name, const std::vector<app::DeckOv
   const mpm::Particles& p = solver.points();
   for (std::size_t i = p.begin_of(0); i < p.end_of(0); ++i)
   {
-    if (p.state[i].failure == 0)
+    if (p.failure[i] == 0)
       continue;
     ++r.n_failed;
     const Vector3& x = p.reference_position[i];
