@@ -26,7 +26,7 @@ ParticleSnapshot mpm_snapshot(const mpm::Solver& solver)
                 mpm::Vector3 a = mpm::Vector3::Zero();
                 if (solver.body_material(p.body_of(k)).uses_fibers())
                 {
-                  a = p.deformation_gradient[k] * p.fiber_direction[k];
+                  a = p.deformation_gradient[k] * p.fiber_direction[k].cast<double>();
                   const double norm = a.norm();
                   a = norm > 0 ? mpm::Vector3(a / norm) : mpm::Vector3::Zero();
                 }

@@ -40,7 +40,8 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
       0.5 * solver.scene().cell_size / solver.scene().bodies[b].particles_per_cell;
     for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
     {
-      const double along = p.reference_position[i].dot(axis);
+      const mpm::Vector3 X = p.reference_position[i].cast<double>();
+      const double along = X.dot(axis);
       entrance = std::min(entrance, along - half_spacing);
       exit = std::max(exit, along + half_spacing);
       const std::uint8_t flag = p.failure[i];
@@ -50,7 +51,7 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
         sample.intact_volume += p.reference_volume[i];
       }
       else
-        append_record(failed, p.reference_position[i], p.reference_volume[i], flag);
+        append_record(failed, X, p.reference_volume[i], flag);
     }
   }
   const mpm::RankGroup& ranks = solver.rank_group();

@@ -74,13 +74,14 @@ struct PointResponse
 };
 
 /// Arrays (structure of arrays) of a block of points that share one material.
-/// fiber_directions may be null for materials without fibers. The plastic history of point i
+/// fiber_directions (single precision, normalized in double before use) may be null for
+/// materials without fibers. The plastic history of point i
 /// is plastic[plastic_slots[i].index]; both may be null for laws without plastic history.
 struct PointBlock
 {
   std::size_t n_points = 0;
   const Tensor2* deformation_gradients = nullptr;
-  const Vector3* fiber_directions = nullptr;
+  const Eigen::Vector3f* fiber_directions = nullptr;
   std::uint8_t* failure = nullptr;
   PlasticHistory* plastic = nullptr;
   const PlasticSlot* plastic_slots = nullptr;
@@ -137,7 +138,9 @@ public:
     PlasticHistory unused; // laws without plastic history never touch it
     for (std::size_t i = 0; i < block.n_points; ++i)
       law.update_point(block.deformation_gradients[i],
-                       block.fiber_directions ? block.fiber_directions[i] : no_fiber,
+                       block.fiber_directions
+                         ? Vector3(block.fiber_directions[i].cast<double>().normalized())
+                         : no_fiber,
                        block.failure[i],
                        block.plastic ? block.plastic[block.plastic_slots[i].index] : unused,
                        block.responses[i]);

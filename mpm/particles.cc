@@ -14,13 +14,13 @@ void Particles::append(const Vector3& x, const Vector3& v, const double m, const
 {
   id.push_back(static_cast<std::uint32_t>(position.size()));
   position.push_back(x);
-  reference_position.push_back(x);
+  reference_position.push_back(x.cast<float>());
   velocity.push_back(v);
   deformation_gradient.push_back(Tensor2::Identity());
   stress.push_back(SymmetricTensor::Zero());
   mass.push_back(m);
   reference_volume.push_back(volume);
-  fiber_direction.push_back(fiber);
+  fiber_direction.push_back(fiber.cast<float>());
   failure.push_back(materials::intact);
   plastic_slot.emplace_back();
   if (plastic_history)

@@ -15,6 +15,7 @@
 namespace vulnus::mpm
 {
 using Vector3 = Eigen::Vector3d;
+using Vector3f = Eigen::Vector3f;
 using Tensor2 = Eigen::Matrix3d;
 /// A symmetric tensor in Voigt order xx yy zz xy yz xz (48 bytes instead of 72).
 using SymmetricTensor = Eigen::Matrix<double, 6, 1>;
@@ -39,13 +40,15 @@ inline Tensor2 full_tensor(const SymmetricTensor& s)
 struct Particles
 {
   std::vector<Vector3> position;
-  std::vector<Vector3> reference_position; ///< where the point started (wound maps)
+  /// Where the point started (wound maps); single precision, 3 nm at 5 cm.
+  std::vector<Vector3f> reference_position;
   std::vector<Vector3> velocity;
   std::vector<Tensor2> deformation_gradient;
   std::vector<SymmetricTensor> stress; ///< Cauchy stress, Pa
   std::vector<double> mass;
   std::vector<double> reference_volume;
-  std::vector<Vector3> fiber_direction; ///< reference unit fiber a0 (bodies with fibers)
+  /// Reference unit fiber a0 (bodies with fibers); single precision, normalized when used.
+  std::vector<Vector3f> fiber_direction;
   std::vector<std::uint8_t> failure; ///< materials::FailureFlag bits
   /// Where the point's plastic history is in plastic_pool (none for laws without one).
   std::vector<materials::PlasticSlot> plastic_slot;

@@ -21,7 +21,7 @@ namespace
 struct Block
 {
   std::vector<Tensor2> F;
-  std::vector<Vector3> a0;
+  std::vector<Eigen::Vector3f> a0; ///< as MPM points store them
   std::vector<std::uint8_t> failure;
   std::vector<PlasticHistory> plastic;
   std::vector<PlasticSlot> slots;
@@ -45,7 +45,7 @@ Block make_block(const std::size_t n, const double amplitude)
   {
     for (int k = 0; k < 9; ++k)
       b.F[i](k / 3, k % 3) = (k % 4 == 0 ? 1.0 : 0.0) + amplitude * uniform(rng);
-    b.a0[i] = Vector3(normal(rng), normal(rng), normal(rng)).normalized();
+    b.a0[i] = Vector3(normal(rng), normal(rng), normal(rng)).normalized().cast<float>();
     b.slots[i].index = static_cast<std::uint32_t>(i);
   }
   return b;
@@ -81,7 +81,7 @@ double time_tangents(const Material& material, const Block& b, const std::size_t
   double checksum = 0.0;
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < n; ++i)
-    checksum += material.tangent(b.F[i], b.a0[i], PointState())(0, 0);
+    checksum += material.tangent(b.F[i], b.a0[i].cast<double>(), PointState())(0, 0);
   const auto stop = std::chrono::steady_clock::now();
   if (checksum == 12345.678)
     std::printf(" ");

@@ -26,7 +26,7 @@ Displacements zone_displacements(const mpm::Particles& p, const HybridParameters
   Displacements u;
   for (std::size_t i = p.begin_of(0); i < p.end_of(0); ++i)
   {
-    const mpm::Vector3& X = p.reference_position[i];
+    const mpm::Vector3 X = p.reference_position[i].cast<double>();
     bool inside = true;
     for (int d = 0; d < 3; ++d)
       inside = inside && X[d] > z.zone_min[d] && X[d] < z.zone_max[d];

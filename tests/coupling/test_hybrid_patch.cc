@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <mpi.h>
 
 namespace vulnus::coupling
 {
@@ -32,13 +34,38 @@ struct PatchErrors
   double stress_scale = 0.0;
 };
 
-/// Over all ranks (collective).
-double worst_velocity(const HybridSolver& solver, const Eigen::Matrix3d& L)
+/// Every MPM point's position by id, over all ranks (collective): the exact starting positions
+/// (the solver keeps reference positions in single precision).
+std::map<std::uint32_t, mpm::Vector3> positions_on_all_ranks(const HybridSolver& solver)
+{
+  const mpm::Particles& p = solver.mpm().points();
+  std::vector<double> mine;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    mine.insert(mine.end(), {double(p.id[i]), p.position[i][0], p.position[i][1], p.position[i][2]});
+  const MPI_Comm comm = solver.fe().communicator();
+  int n_ranks = 1, count = static_cast<int>(mine.size());
+  MPI_Comm_size(comm, &n_ranks);
+  std::vector<int> counts(n_ranks), offsets(n_ranks, 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  for (int r = 1; r < n_ranks; ++r)
+    offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> all(offsets.back() + counts.back());
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+                 MPI_DOUBLE, comm);
+  std::map<std::uint32_t, mpm::Vector3> by_id;
+  for (std::size_t k = 0; k < all.size(); k += 4)
+    by_id[static_cast<std::uint32_t>(all[k])] = mpm::Vector3(all[k + 1], all[k + 2], all[k + 3]);
+  return by_id;
+}
+
+/// Over all ranks (collective); start: every point's starting position by id.
+double worst_velocity(const HybridSolver& solver, const Eigen::Matrix3d& L,
+                      const std::map<std::uint32_t, mpm::Vector3>& start)
 {
   double worst = 0.0;
   const mpm::Particles& p = solver.mpm().points();
   for (std::size_t i = 0; i < p.size(); ++i)
-    worst = std::max(worst, (p.velocity[i] - L * p.reference_position[i]).norm());
+    worst = std::max(worst, (p.velocity[i] - L * start.at(p.id[i])).norm());
   for (const fem::NodeRecord& node : solver.fe().locally_owned_nodes())
   {
     const dealii::Tensor<1, 3> v = solver.fe().velocity(node);
@@ -66,13 +93,14 @@ PatchErrors run_patch(const CouplingScheme scheme, const Eigen::Matrix3d& L)
       });
   });
   solver.set_initial_velocity(field);
+  const std::map<std::uint32_t, mpm::Vector3> start = positions_on_all_ranks(solver);
   PatchErrors e;
   e.velocity_scale = (L * mpm::Vector3(0.012, 0.012, 0.012)).norm();
   solver.advance();
-  e.first_step_velocity = worst_velocity(solver, L);
+  e.first_step_velocity = worst_velocity(solver, L, start);
   while (solver.time() < 2e-3)
     solver.advance();
-  e.velocity = worst_velocity(solver, L);
+  e.velocity = worst_velocity(solver, L, start);
   const dealii::Tensor<2, 3> fe_stress = solver.fe().average_cauchy_stress();
   const mpm::Particles& p = solver.mpm().points();
   for (unsigned int a = 0; a < 3; ++a)

@@ -48,7 +48,7 @@ ShortRun run_briefly(const std::string& deck_name, const std::vector<app::DeckOv
     if (p.failure[i] == 0)
       continue;
     ++r.n_failed;
-    const Vector3& x = p.reference_position[i];
+    const Vector3 x = p.reference_position[i].cast<double>();
     r.farthest_failure_from_axis = std::max(r.farthest_failure_from_axis, std::hypot(x[0], x[2]));
     r.deepest_failure = std::max(r.deepest_failure, x[1]);
   }
