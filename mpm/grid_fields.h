@@ -34,10 +34,11 @@ struct GridFields
   std::vector<Vector3> velocity;     ///< v^n, projected from the points
   std::vector<Vector3> velocity_new; ///< v^(n+1) after forces, contact and boundary conditions
 
+  /// Sizes the arrays; data is not cleared (the scatter clears it in parallel).
   void resize(std::size_t n_active_nodes)
   {
     const std::size_t n = n_active_nodes * n_bodies;
-    data.assign(n, NodeBodyData());
+    data.resize(n);
     velocity.resize(n);
     velocity_new.resize(n);
   }

@@ -83,7 +83,16 @@ void particles_to_grid(const Particles& particles, const Grid& grid,
       const int t = omp_get_thread_num();
       std::vector<NodeBodyData>& out = t == 0 ? fields.data : buffers.per_thread[t];
       if (t != 0)
-        out.assign(n_entries, NodeBodyData());
+        out.resize(n_entries);
+#pragma omp barrier
+      // Every thread clears an equal share of every buffer (fields.data included).
+#pragma omp for schedule(static)
+      for (long e = 0; e < static_cast<long>(n_entries); ++e)
+      {
+        fields.data[e] = NodeBodyData();
+        for (int other = 1; other < n_threads; ++other)
+          buffers.per_thread[other][e] = NodeBodyData();
+      }
       for (std::size_t b = 0; b < n_bodies; ++b)
       {
         const long begin = particles.begin_of(b), end = particles.end_of(b);

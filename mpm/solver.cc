@@ -268,23 +268,36 @@ double* Solver::volumetric_rate_or_null()
 
 void Solver::sort_points()
 {
-  // 32-bit keys and order: 8 bytes of scratch per point (a rank holds fewer than 2^32 points
+  // A counting sort by cell within each body: stable, linear in points plus cells, with
+  // 32-bit keys and order (8 bytes of scratch per point; a rank holds fewer than 2^32 points
   // and the padded grid fewer than 2^32 cells, which the grid's limit of 2^31 nodes ensures).
   const auto& n = grid.cells();
+  const std::int64_t extent[3] = {n[0] + 5, n[1] + 5, n[2] + 5};
+  const std::size_t n_keys = static_cast<std::size_t>(extent[0] * extent[1] * extent[2]);
+  const long n_points = static_cast<long>(particles.size());
   std::vector<std::uint32_t> cell_key(particles.size());
-  std::vector<std::uint32_t> order(particles.size());
-  for (std::size_t p = 0; p < particles.size(); ++p)
+#pragma omp parallel for schedule(static)
+  for (long p = 0; p < n_points; ++p)
   {
     const Vector3 s = grid.to_cell_units(particles.position[p]);
-    const std::int64_t i = static_cast<std::int64_t>(std::floor(s[0])) + 2;
-    const std::int64_t j = static_cast<std::int64_t>(std::floor(s[1])) + 2;
-    const std::int64_t k = static_cast<std::int64_t>(std::floor(s[2])) + 2;
-    cell_key[p] = static_cast<std::uint32_t>(i + (n[0] + 5) * (j + (n[1] + 5) * k));
-    order[p] = static_cast<std::uint32_t>(p);
+    std::int64_t ijk[3];
+    for (int d = 0; d < 3; ++d) // clamped: a point far outside only lands in an edge cell
+      ijk[d] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(s[d])) + 2, 0,
+                                        extent[d] - 1);
+    cell_key[p] = static_cast<std::uint32_t>(ijk[0] + extent[0] * (ijk[1] + extent[1] * ijk[2]));
   }
+  std::vector<std::uint32_t> order(particles.size());
+  std::vector<std::uint32_t> first_of_key(n_keys + 1);
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
-    std::stable_sort(order.begin() + particles.begin_of(b), order.begin() + particles.end_of(b),
-                     [&](std::uint32_t a, std::uint32_t c) { return cell_key[a] < cell_key[c]; });
+  {
+    const std::size_t begin = particles.begin_of(b), end = particles.end_of(b);
+    std::fill(first_of_key.begin(), first_of_key.end(), 0u);
+    for (std::size_t p = begin; p < end; ++p)
+      ++first_of_key[cell_key[p] + 1];
+    std::partial_sum(first_of_key.begin(), first_of_key.end(), first_of_key.begin());
+    for (std::size_t p = begin; p < end; ++p)
+      order[begin + first_of_key[cell_key[p]]++] = static_cast<std::uint32_t>(p);
+  }
   particles.permute(order);
 }
 
@@ -292,26 +305,35 @@ void Solver::remove_points_outside_grid()
 {
   const Vector3 lower = grid.origin().array() - grid.cell_size();
   const Vector3 upper = grid.upper_corner().array() + 0.999 * grid.cell_size();
-  const std::size_t n = particles.size();
-  std::vector<char> keep(n, 1);
+  // NaN is a blow-up, not an outflow: check_state reports it.
+  auto leaves = [&](const Vector3& x) {
+    return x.allFinite() &&
+           !((x.array() >= lower.array()).all() && (x.array() <= upper.array()).all());
+  };
+  const long n = static_cast<long>(particles.size());
+  long n_leaving = 0;
+#pragma omp parallel for schedule(static) reduction(+ : n_leaving)
+  for (long p = 0; p < n; ++p)
+    n_leaving += leaves(particles.position[p]);
   // This step's outflow: count, energy, momentum; summed over the ranks.
-  double outflow[5] = {0, 0, 0, 0, 0};
-  for (std::size_t p = 0; p < n; ++p)
+  double outflow[5] = {static_cast<double>(n_leaving), 0, 0, 0, 0};
+  if (n_leaving > 0)
   {
-    const Vector3& x = particles.position[p];
-    if (!x.allFinite() || ((x.array() >= lower.array()).all() && (x.array() <= upper.array()).all()))
-      continue; // NaN is a blow-up, not an outflow: check_state reports it
-    keep[p] = 0;
-    const double m = particles.mass[p];
-    outflow[0] += 1.0;
-    outflow[1] += 0.5 * m * particles.velocity[p].squaredNorm() +
-                  particles.reference_volume[p] *
-                    (particles.energy_density[p] + particles.dissipated_density[p]);
-    for (int d = 0; d < 3; ++d)
-      outflow[2 + d] += m * particles.velocity[p][d];
-  }
-  if (outflow[0] > 0)
+    std::vector<char> keep(particles.size(), 1);
+    for (long p = 0; p < n; ++p)
+    {
+      if (!leaves(particles.position[p]))
+        continue;
+      keep[p] = 0;
+      const double m = particles.mass[p];
+      outflow[1] += 0.5 * m * particles.velocity[p].squaredNorm() +
+                    particles.reference_volume[p] *
+                      (particles.energy_density[p] + particles.dissipated_density[p]);
+      for (int d = 0; d < 3; ++d)
+        outflow[2 + d] += m * particles.velocity[p][d];
+    }
     particles.keep_only(keep);
+  }
   ranks.sum(outflow, 5);
   n_removed += static_cast<std::size_t>(outflow[0]);
   outflow_energy += outflow[1];
