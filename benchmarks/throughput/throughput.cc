@@ -16,6 +16,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -115,6 +116,32 @@ double stress_ns(const Measurement& m)
   return 1e9 * m.phases.stress_update / (double(m.points) * m.steps);
 }
 
+/// 2 threads / 1 thread from `repeats` further pairs measured back to back (1 then 2 threads),
+/// so that a slow spell of the shared machine spoils one pair, not the figure: every pair's
+/// ratio and their median.
+void report_thread_scaling(const mpm::SceneParameters& scene, const std::size_t warmup,
+                           const std::size_t steps, const std::size_t repeats)
+{
+  if (repeats == 0)
+    return;
+  for (const mpm::ShapeFunction shape : {mpm::ShapeFunction::linear, mpm::ShapeFunction::gimp})
+  {
+    std::vector<double> ratios;
+    for (std::size_t r = 0; r < repeats; ++r)
+    {
+      const double one = measure(scene, 1, shape, warmup, steps).point_steps_per_second;
+      const double two = measure(scene, 2, shape, warmup, steps).point_steps_per_second;
+      ratios.push_back(two / one);
+    }
+    std::printf("  %s, %zu pairs 1 then 2 threads:", shape == mpm::ShapeFunction::linear ? "linear" : "GIMP",
+                repeats);
+    for (const double ratio : ratios)
+      std::printf(" %.2f", ratio);
+    std::sort(ratios.begin(), ratios.end());
+    std::printf("; median %.2f\n", ratios[ratios.size() / 2]);
+  }
+}
+
 /// What each skip saves, measured on variants of the scene (issue 8).
 void report_skips(const mpm::SceneParameters& scene, const Measurement& base,
                   const std::size_t warmup, const std::size_t steps)
@@ -182,7 +209,7 @@ int main(int argc, char** argv)
 {
   const std::string source = VULNUS_SOURCE_DIR;
   std::string deck = source + "/inputs/paper/anisotropic_150ms_coarse.prm";
-  std::size_t steps = 40, warmup = 20;
+  std::size_t steps = 40, warmup = 20, repeats = 3;
   for (int i = 1; i < argc; ++i)
   {
     const std::string argument = argv[i];
@@ -190,11 +217,13 @@ int main(int argc, char** argv)
       steps = std::stoul(argv[++i]);
     else if (argument == "--warmup" && i + 1 < argc)
       warmup = std::stoul(argv[++i]);
+    else if (argument == "--repeats" && i + 1 < argc)
+      repeats = std::stoul(argv[++i]);
     else if (argument.rfind("--", 0) != 0)
       deck = argument;
     else
     {
-      std::cerr << "usage: throughput [DECK] [--steps N] [--warmup N]\n";
+      std::cerr << "usage: throughput [DECK] [--steps N] [--warmup N] [--repeats N]\n";
       return 2;
     }
   }
@@ -228,6 +257,7 @@ int main(int argc, char** argv)
   std::printf("2 threads / 1 thread: linear %.2f, GIMP %.2f\n",
               linear[1].point_steps_per_second / linear[0].point_steps_per_second,
               gimp[1].point_steps_per_second / gimp[0].point_steps_per_second);
+  report_thread_scaling(parameters.scene, warmup, steps, repeats);
   std::printf("GIMP / linear (2 threads): %.2f\n",
               gimp[1].point_steps_per_second / linear[1].point_steps_per_second);
   std::printf("resident memory of the first scene: %.0f B/point (growth of the resident set over "
