@@ -82,8 +82,6 @@ hid_t memory_type(const ParticleSnapshot::Element element)
     return H5T_NATIVE_UINT8;
   case ParticleSnapshot::Element::uint32:
     return H5T_NATIVE_UINT32;
-  case ParticleSnapshot::Element::int32:
-    return H5T_NATIVE_INT32;
   default:
     return H5T_NATIVE_DOUBLE;
   }
@@ -96,9 +94,7 @@ void write_rows(const hid_t set, const std::string& name, const RowRange& rows,
                 const std::size_t count, const void* data)
 {
   const int rank = n_columns == 1 ? 1 : 2;
-  const hsize_t dims[2] = {static_cast<hsize_t>(rows.total), static_cast<hsize_t>(n_columns)};
-  const Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose,
-                     "create a data space for '" + name + "'");
+  const Handle space(H5Dget_space(set), H5Sclose, "get the data space of '" + name + "'");
   const hsize_t start[2] = {static_cast<hsize_t>(rows.first + first), 0};
   const hsize_t shape[2] = {static_cast<hsize_t>(std::max<std::size_t>(count, 1)),
                             static_cast<hsize_t>(n_columns)};
@@ -217,11 +213,6 @@ void ParticleSnapshot::borrow_integer(const std::string& name, const std::uint8_
 void ParticleSnapshot::borrow_integer(const std::string& name, const std::uint32_t* values)
 {
   add_field({name, FieldKind::integer, values, Element::uint32, {}});
-}
-
-void ParticleSnapshot::borrow_integer(const std::string& name, const std::int32_t* values)
-{
-  add_field({name, FieldKind::integer, values, Element::int32, {}});
 }
 
 void ParticleSnapshot::compute(const std::string& name, const FieldKind kind, Fill fill)

@@ -36,8 +36,7 @@ public:
     float64,
     float32,
     uint8,
-    uint32,
-    int32
+    uint32
   };
   /// Fills rows [first, first + count) of a computed field: count x components values,
   /// interleaved, as double (int32 for integer fields).
@@ -67,7 +66,6 @@ public:
   void borrow_symmetric_tensor(const std::string& name, const double* voigt);
   void borrow_integer(const std::string& name, const std::uint8_t* values);
   void borrow_integer(const std::string& name, const std::uint32_t* values);
-  void borrow_integer(const std::string& name, const std::int32_t* values);
   /// A field produced chunk by chunk while writing (values derived from several arrays).
   void compute(const std::string& name, FieldKind kind, Fill fill);
 

@@ -91,16 +91,14 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                              });
         particles.position[p] += dt * v;
         Tensor2& F = particles.deformation_gradient[p];
+        const double J_old = volumetric_rate ? F.determinant() : 0.0;
+        F = (Tensor2::Identity() + dt * L) * F;
         if (volumetric_rate)
         {
-          const double J_old = F.determinant();
-          F = (Tensor2::Identity() + dt * L) * F;
           const double J_new = F.determinant();
           volumetric_rate[p] =
             (J_new > 0.0 && J_old > 0.0) ? std::log(J_new / J_old) / dt : L.trace();
         }
-        else
-          F = (Tensor2::Identity() + dt * L) * F;
       }
     }
   });

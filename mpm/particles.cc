@@ -95,11 +95,11 @@ void Particles::permute(const std::vector<std::uint32_t>& order)
 
 void Particles::compact_plastic_pool()
 {
+  if (plastic_pool.empty())
+    return; // no point has a slot
   std::size_t n_live = 0;
   for (const materials::PlasticSlot& slot : plastic_slot)
     n_live += slot.index != materials::PlasticSlot::none;
-  if (n_live == 0 && plastic_pool.empty())
-    return;
   std::vector<materials::PlasticHistory> compacted;
   compacted.reserve(n_live);
   for (materials::PlasticSlot& slot : plastic_slot)
@@ -109,5 +109,20 @@ void Particles::compact_plastic_pool()
       slot.index = static_cast<std::uint32_t>(compacted.size() - 1);
     }
   plastic_pool = std::move(compacted);
+}
+
+long Particles::body_with_invalid_plastic_slots(
+  const std::vector<char>* body_has_plastic_history) const
+{
+  for (std::size_t b = 0; b < n_bodies(); ++b)
+    for (std::size_t p = begin_of(b); p < end_of(b); ++p)
+    {
+      const std::uint32_t slot = plastic_slot[p].index;
+      const bool has_slot = slot != materials::PlasticSlot::none;
+      if ((has_slot && slot >= plastic_pool.size()) ||
+          (body_has_plastic_history && has_slot != ((*body_has_plastic_history)[b] != 0)))
+        return static_cast<long>(b);
+    }
+  return -1;
 }
 } // namespace vulnus::mpm

@@ -93,6 +93,10 @@ struct Particles
   }
   /// Rebuilds plastic_pool in point order without the entries no point refers to.
   void compact_plastic_pool();
+  /// The first body with a point whose slot lies outside plastic_pool or (given a flag per
+  /// body) whose slot's presence disagrees with its body's flag; -1 when there is none.
+  long body_with_invalid_plastic_slots(
+    const std::vector<char>* body_has_plastic_history = nullptr) const;
   /// Opens a new body; points appended from now on belong to it.
   void start_body() { body_begin.push_back(size()); }
   /// Closes the last body (records its end).

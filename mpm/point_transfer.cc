@@ -61,14 +61,6 @@ Particles gather(const std::vector<const Particles*>& sources, const std::vector
   return result;
 }
 
-/// Throws when a point refers to a plastic history the container does not hold.
-void check_plastic_slots(const Particles& points)
-{
-  for (const materials::PlasticSlot& slot : points.plastic_slot)
-    if (slot.index != materials::PlasticSlot::none && slot.index >= points.plastic_pool.size())
-      throw std::runtime_error("point transfer: a point refers to a missing plastic history");
-}
-
 class ByteReader
 {
 public:
@@ -144,7 +136,8 @@ Particles from_bytes(const char* data, const std::size_t size)
   reader.read(points.plastic_pool.data(), points.plastic_pool.size());
   if (!reader.at_end() || points.body_begin.back() != counts[1])
     throw std::runtime_error("point transfer: message size does not match its contents");
-  check_plastic_slots(points);
+  if (points.body_with_invalid_plastic_slots() >= 0)
+    throw std::runtime_error("point transfer: a point refers to a missing plastic history");
   return points;
 }
 

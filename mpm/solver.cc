@@ -39,9 +39,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   // A distributed run cuts the slabs from the points' positions first, then each rank builds
   // only the points of its own slab.
   plan_slabs();
-  std::vector<char> plastic_history;
-  for (const materials::Material* material : materials_of_body)
-    plastic_history.push_back(material->has_plastic_history());
+  const std::vector<char> plastic_history = bodies_with_plastic_history();
   if (ranks.distributed())
     build_bodies(scene, grid, particles, plastic_history, [this](const Vector3& x)
                  { return partition.rank_of_position(grid, x) == ranks.rank(); });
@@ -256,6 +254,14 @@ bool Solver::finished() const
     return ranks.min(tail) > exit_plane;
   }
   return false;
+}
+
+std::vector<char> Solver::bodies_with_plastic_history() const
+{
+  std::vector<char> flags;
+  for (const materials::Material* material : materials_of_body)
+    flags.push_back(material->has_plastic_history());
+  return flags;
 }
 
 double* Solver::volumetric_rate_or_null()

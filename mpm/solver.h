@@ -147,6 +147,8 @@ private:
   /// Per-point volumetric strain rate for the bulk viscosity, sized to the points; null (no
   /// memory) when the viscosity is off.
   double* volumetric_rate_or_null();
+  /// Per body: 1 when its law keeps a plastic history (its points get slots).
+  std::vector<char> bodies_with_plastic_history() const;
   void check_state() const;
   std::string state_problem() const;
   void plan_slabs();

@@ -84,17 +84,10 @@ void Solver::restore(std::istream& in)
   loaded.for_each_array([&](const auto& values) { sizes_agree = sizes_agree && values.size() == n; });
   if (!sizes_agree)
     throw std::runtime_error("checkpoint is inconsistent (array sizes differ)");
-  for (std::size_t b = 0; b < n_bodies; ++b)
-  {
-    const bool plastic = materials_of_body[b]->has_plastic_history();
-    for (std::size_t p = loaded.begin_of(b); p < loaded.end_of(b); ++p)
-    {
-      const std::uint32_t slot = loaded.plastic_slot[p].index;
-      if (plastic ? slot >= loaded.plastic_pool.size() : slot != materials::PlasticSlot::none)
-        throw std::runtime_error("checkpoint is inconsistent (plastic histories of body " +
-                                 parameters.bodies[b].name + ")");
-    }
-  }
+  const std::vector<char> plastic_bodies = bodies_with_plastic_history();
+  if (const long b = loaded.body_with_invalid_plastic_slots(&plastic_bodies); b >= 0)
+    throw std::runtime_error("checkpoint is inconsistent (plastic histories of body " +
+                             parameters.bodies[b].name + ")");
 
   if (n_ranks != static_cast<std::uint64_t>(ranks.size()))
     throw std::runtime_error("checkpoint was written by " + std::to_string(n_ranks) +

@@ -2,11 +2,12 @@
 #include "coupling/hybrid_solver.h"
 #include "hybrid_test_scenes.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
-#include <mpi.h>
 
 namespace vulnus::coupling
 {
@@ -42,19 +43,11 @@ std::map<std::uint32_t, mpm::Vector3> positions_on_all_ranks(const HybridSolver&
   std::vector<double> mine;
   for (std::size_t i = 0; i < p.size(); ++i)
     mine.insert(mine.end(), {double(p.id[i]), p.position[i][0], p.position[i][1], p.position[i][2]});
-  const MPI_Comm comm = solver.fe().communicator();
-  int n_ranks = 1, count = static_cast<int>(mine.size());
-  MPI_Comm_size(comm, &n_ranks);
-  std::vector<int> counts(n_ranks), offsets(n_ranks, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  for (int r = 1; r < n_ranks; ++r)
-    offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<double> all(offsets.back() + counts.back());
-  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
-                 MPI_DOUBLE, comm);
   std::map<std::uint32_t, mpm::Vector3> by_id;
-  for (std::size_t k = 0; k < all.size(); k += 4)
-    by_id[static_cast<std::uint32_t>(all[k])] = mpm::Vector3(all[k + 1], all[k + 2], all[k + 3]);
+  for (const std::vector<double>& all :
+       dealii::Utilities::MPI::all_gather(solver.fe().communicator(), mine))
+    for (std::size_t k = 0; k < all.size(); k += 4)
+      by_id[static_cast<std::uint32_t>(all[k])] = mpm::Vector3(all[k + 1], all[k + 2], all[k + 3]);
   return by_id;
 }
 

@@ -126,7 +126,9 @@ TEST(PointTransfer, SplitBytesAndMergeKeepEveryPoint)
     EXPECT_EQ(i < merged.end_of(0), original < points.end_of(0));
     ASSERT_EQ(merged.plastic_of(i) != nullptr, i >= merged.end_of(0)); // body 1 only
     if (merged.plastic_of(i))
+    {
       EXPECT_EQ(merged.plastic_of(i)->equivalent_plastic_strain, 0.5 * original);
+    }
   }
 }
 
@@ -207,7 +209,9 @@ TEST(PointTransfer, InPlaceExchangeEqualsTheCopyingMerge)
       const bool in_plastic_body = result.body_of(i) == 1;
       ASSERT_EQ(result.plastic_of(i) != nullptr, in_plastic_body) << "trial " << trial;
       if (in_plastic_body)
+      {
         ASSERT_EQ(result.plastic_of(i)->equivalent_plastic_strain, 4 * id) << "trial " << trial;
+      }
     }
   }
 }
