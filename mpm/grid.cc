@@ -26,7 +26,7 @@ Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double 
   const std::int64_t n_box = n_nodes_box[0] * n_nodes_box[1] * n_nodes_box[2];
   if (n_box > std::int64_t(1) << 31)
     throw std::invalid_argument("Grid: more than 2^31 nodes in the grid box; use larger cells");
-  slot_of_key.assign(static_cast<std::size_t>(n_box), -1);
+  slot_of_key.assign(static_cast<std::size_t>(n_box), unmarked);
 }
 
 std::array<int, 3> Grid::cell_counts(const Vector3& domain_min, const Vector3& domain_max,
@@ -52,22 +52,38 @@ Vector3 Grid::node_position(const std::int64_t key) const
   return domain_min + h * Vector3(ijk[0], ijk[1], ijk[2]);
 }
 
-std::size_t Grid::number_active_nodes()
+std::size_t Grid::number_active_nodes(const int n_shares)
 {
+  shares = n_shares;
   active.clear();
+  contested.clear();
+  contested_of_slot.clear();
   const std::int64_t n_box = static_cast<std::int64_t>(slot_of_key.size());
   for (std::int64_t key = 0; key < n_box; ++key)
-    if (slot_of_key[key] == 0)
-      active.push_back(key);
-  for (std::size_t s = 0; s < active.size(); ++s)
-    slot_of_key[active[s]] = static_cast<std::int32_t>(s);
+  {
+    const std::int32_t mark = slot_of_key[key];
+    if (mark == unmarked)
+      continue;
+    const auto slot = static_cast<std::int32_t>(active.size());
+    active.push_back(key);
+    if (mark == marked_contested)
+    {
+      contested_of_slot.push_back(static_cast<std::int32_t>(contested.size()));
+      contested.push_back(slot);
+    }
+    else
+      contested_of_slot.push_back(-1);
+    slot_of_key[key] = slot;
+  }
   return active.size();
 }
 
 void Grid::clear_active_nodes()
 {
   for (const auto key : active)
-    slot_of_key[key] = -1;
+    slot_of_key[key] = unmarked;
   active.clear();
+  contested.clear();
+  contested_of_slot.clear();
 }
 } // namespace vulnus::mpm

@@ -51,13 +51,24 @@ public:
   std::array<int, 3> node_ijk(std::int64_t key) const;
   Vector3 node_position(std::int64_t key) const;
 
-  /// Sparse active set: mark keys (thread-safe, idempotent), then number them.
-  void mark(std::int64_t key)
+  /// Sparse active set: each share of points (mpm/point_shares.h) marks the keys it touches
+  /// (thread-safe, idempotent); a key marked by two shares becomes contested.
+  void mark(const std::int64_t key, const int share)
   {
-    __atomic_store_n(&slot_of_key[key], 0, __ATOMIC_RELAXED);
+    std::int32_t* entry = &slot_of_key[key];
+    const std::int32_t mine = marked_by_share_0 - share;
+    std::int32_t seen = __atomic_load_n(entry, __ATOMIC_RELAXED);
+    while (seen != mine && seen != marked_contested)
+    {
+      const std::int32_t wanted = seen == unmarked ? mine : marked_contested;
+      if (__atomic_compare_exchange_n(entry, &seen, wanted, false, __ATOMIC_RELAXED,
+                                      __ATOMIC_RELAXED))
+        return;
+    }
   }
-  /// Numbers the marked nodes in key order and returns their count.
-  std::size_t number_active_nodes();
+  /// Numbers the marked nodes in key order (and the contested ones among them) after marking
+  /// by n_shares shares; returns the count.
+  std::size_t number_active_nodes(int n_shares);
   /// Unmarks every active node (cost proportional to the active set).
   void clear_active_nodes();
 
@@ -67,6 +78,13 @@ public:
   std::size_t n_active() const { return active.size(); }
   std::size_t n_box_nodes() const { return slot_of_key.size(); }
 
+  /// Shares of points the active set was marked with.
+  int n_point_shares() const { return shares; }
+  /// Index of an active node among the contested ones, or -1 when one share alone touches it.
+  std::int32_t contested_index(const std::int32_t slot) const { return contested_of_slot[slot]; }
+  const std::vector<std::int32_t>& contested_slots() const { return contested; }
+  std::size_t n_contested() const { return contested.size(); }
+
 private:
   Vector3 domain_min = Vector3::Zero();
   Vector3 domain_max = Vector3::Zero();
@@ -74,7 +92,14 @@ private:
   double inverse_h = 1.0;
   std::array<int, 3> n_cells{{0, 0, 0}};
   std::array<std::int64_t, 3> n_nodes_box{{0, 0, 0}};
+  // Before numbering, slot_of_key holds marks: unmarked, contested, or the one share.
+  static constexpr std::int32_t unmarked = -1;
+  static constexpr std::int32_t marked_contested = -2;
+  static constexpr std::int32_t marked_by_share_0 = -3;
   std::vector<std::int32_t> slot_of_key;
   std::vector<std::int64_t> active;
+  int shares = 1;
+  std::vector<std::int32_t> contested_of_slot;
+  std::vector<std::int32_t> contested;
 };
 } // namespace vulnus::mpm

@@ -18,12 +18,13 @@ struct NodeBodyData
   Vector3 force = Vector3::Zero();
   Vector3 mass_gradient = Vector3::Zero();
 
-  void add(const NodeBodyData& other)
+  NodeBodyData& operator+=(const NodeBodyData& other)
   {
     mass += other.mass;
     momentum += other.momentum;
     force += other.force;
     mass_gradient += other.mass_gradient;
+    return *this;
   }
 };
 
@@ -33,6 +34,7 @@ struct GridFields
   std::vector<NodeBodyData> data;
   std::vector<Vector3> velocity;     ///< v^n, projected from the points
   std::vector<Vector3> velocity_new; ///< v^(n+1) after forces, contact and boundary conditions
+  std::vector<Vector3> projected_momentum; ///< MUSL: the points' new momenta projected back
 
   /// Sizes the arrays; data is not cleared (the scatter clears it in parallel).
   void resize(std::size_t n_active_nodes)

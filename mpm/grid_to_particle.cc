@@ -3,46 +3,102 @@
 
 #include "mpm/stencil.h"
 
+#include <array>
 #include <cmath>
 
 namespace vulnus::mpm
 {
+namespace
+{
+/// Velocity update of the points of one share of one deformable body; with Project, each
+/// point's new momentum goes back to the nodes it read from, with the same weights.
+template <ShapeFunction shape, bool project>
+void update_share_velocities(const Grid& grid, const double lp, const double flip,
+                             const std::size_t b, const ShareRange range, const GridFields& fields,
+                             Particles& particles, Vector3* momentum, Vector3* contested)
+{
+  constexpr int n = nodes_per_axis(shape);
+  const std::size_t n_bodies = particles.n_bodies();
+  for (long p = range.begin; p < range.end; ++p)
+  {
+    Vector3 v_pic = Vector3::Zero();
+    Vector3 dv = Vector3::Zero();
+    std::array<std::int32_t, n * n * n> slots;
+    std::array<double, n * n * n> weights;
+    int n_nodes = 0;
+    for_each_node<shape>(grid, lp, particles.position[p],
+                         [&](const std::int64_t key, const double w, const Vector3&) {
+                           const std::int32_t slot = grid.slot(key);
+                           const std::size_t e = slot * n_bodies + b;
+                           v_pic += w * fields.velocity_new[e];
+                           dv += w * (fields.velocity_new[e] - fields.velocity[e]);
+                           if constexpr (project)
+                           {
+                             slots[n_nodes] = slot;
+                             weights[n_nodes++] = w;
+                           }
+                         });
+    const Vector3 v = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
+    particles.velocity[p] = v;
+    if constexpr (project)
+    {
+      const Vector3 mv = particles.mass[p] * v;
+      for (int i = 0; i < n_nodes; ++i)
+        scatter_target(grid, slots[i], n_bodies, b, momentum, contested) += weights[i] * mv;
+    }
+  }
+}
+} // namespace
+
 void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
-                             const KinematicsSettings& s, const GridFields& fields,
-                             Particles& particles)
+                             const KinematicsSettings& s, GridFields& fields,
+                             Particles& particles, ScatterBuffers* projection)
 {
   const std::size_t n_bodies = particles.n_bodies();
+  const long n_entries = static_cast<long>(grid.n_active() * n_bodies);
   const double flip = s.flip_fraction;
+  const int n_shares = grid.n_point_shares();
+  if (projection)
+  {
+    fields.projected_momentum.resize(n_entries);
+    size_and_clear_contested(grid, n_bodies, projection->momentum_per_share);
+  }
   with_shape(transfer.shape, [&](auto shape_constant) {
     constexpr ShapeFunction shape = decltype(shape_constant)::value;
-    for (std::size_t b = 0; b < n_bodies; ++b)
+#pragma omp parallel
     {
-      const long begin = particles.begin_of(b), end = particles.end_of(b);
-      if (s.body_is_rigid[b])
+      if (projection)
       {
-        const Vector3 v = s.rigid_velocity[b];
-#pragma omp parallel for schedule(static)
-        for (long p = begin; p < end; ++p)
-          particles.velocity[p] = v;
-        continue;
+#pragma omp for schedule(static)
+        for (long e = 0; e < n_entries; ++e)
+          fields.projected_momentum[e].setZero();
       }
-      const double lp = transfer.half_size_cells[b];
-      // Named here: clang 14 rejects the outer function's parameters inside an OpenMP loop
-      // nested in two lambdas.
-      const std::vector<Vector3>& velocity_new = fields.velocity_new;
-      const std::vector<Vector3>& velocity_old = fields.velocity;
-#pragma omp parallel for schedule(static)
-      for (long p = begin; p < end; ++p)
+      const int team = omp_get_num_threads();
+      for (int share = omp_get_thread_num(); share < n_shares; share += team)
+        for (std::size_t b = 0; b < n_bodies; ++b)
+        {
+          const ShareRange range =
+            share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
+          if (s.body_is_rigid[b])
+          {
+            for (long p = range.begin; p < range.end; ++p)
+              particles.velocity[p] = s.rigid_velocity[b];
+            continue;
+          }
+          const double lp = transfer.half_size_cells[b];
+          if (projection)
+            update_share_velocities<shape, true>(grid, lp, flip, b, range, fields, particles,
+                                                 fields.projected_momentum.data(),
+                                                 projection->momentum_per_share[share].data());
+          else
+            update_share_velocities<shape, false>(grid, lp, flip, b, range, fields, particles,
+                                                  nullptr, nullptr);
+        }
+      if (projection)
       {
-        Vector3 v_pic = Vector3::Zero();
-        Vector3 dv = Vector3::Zero();
-        for_each_node<shape>(grid, lp, particles.position[p],
-                             [&](const std::int64_t key, const double w, const Vector3&) {
-                               const std::size_t e = grid.slot(key) * n_bodies + b;
-                               v_pic += w * velocity_new[e];
-                               dv += w * (velocity_new[e] - velocity_old[e]);
-                             });
-        particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
+#pragma omp barrier
+        add_contested(grid, n_bodies, projection->momentum_per_share,
+                      fields.projected_momentum.data());
       }
     }
   });

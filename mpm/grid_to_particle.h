@@ -1,11 +1,13 @@
-// Grid-to-particle stage: point velocities (FLIP/PIC blend) from the nodal velocities, then
-// the velocity gradient, the deformation gradient update F <- (I + dt L) F and the position
+// Grid-to-particle stage: point velocities (FLIP/PIC blend) from the nodal velocities, for
+// MUSL with their momenta projected back to the nodes in the same pass; then the velocity
+// gradient, the deformation gradient update F <- (I + dt L) F and the position
 // update in one gather. Rigid bodies translate with their rigid velocity.
 #pragma once
 
 #include "mpm/grid.h"
 #include "mpm/grid_fields.h"
 #include "mpm/particles.h"
+#include "mpm/point_shares.h"
 #include "mpm/transfer_settings.h"
 
 #include <vector>
@@ -21,10 +23,13 @@ struct KinematicsSettings
 };
 
 /// Updates point velocities from fields.velocity (v^n) and fields.velocity_new (v^(n+1)):
-/// FLIP/PIC blend. Rigid bodies take their rigid velocity.
+/// FLIP/PIC blend. Rigid bodies take their rigid velocity. With `projection` (MUSL), the
+/// same pass projects every deformable point's new momentum m v back to the nodes marked for
+/// this step, into fields.projected_momentum (zero at rigid bodies' entries), using the
+/// projection's per-share buffers for the contested nodes.
 void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
-                             const KinematicsSettings& settings, const GridFields& fields,
-                             Particles& particles);
+                             const KinematicsSettings& settings, GridFields& fields,
+                             Particles& particles, ScatterBuffers* projection);
 
 /// One gather per point at its position of step n: F <- (I + dt L) F with
 /// L = sum v_gradient (x) grad w, then x <- x + dt sum w v_new (v_new = fields.velocity_new, the

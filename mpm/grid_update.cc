@@ -228,7 +228,7 @@ void velocities_from_momenta(const Grid& grid, const GridUpdateSettings& s, Grid
         fields.velocity[e] = s.rigid_velocity[b];
         continue;
       }
-      fields.velocity[e] = d.momentum / d.mass;
+      fields.velocity[e] = fields.projected_momentum[e] / d.mass;
       apply_face_conditions(grid, s.faces, key, fields.velocity[e]);
     }
   }

@@ -47,7 +47,7 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& settings, Grid
 void apply_face_conditions(const Grid& grid, const FaceConditions& faces, std::int64_t key,
                            Vector3& velocity);
 
-/// Re-derives nodal velocities from the momenta in fields.data (MUSL re-projection) into
+/// Re-derives nodal velocities from fields.projected_momentum and the nodal masses (MUSL) into
 /// fields.velocity (v^n is not needed any more then; fields.velocity_new still moves the
 /// points), with the face conditions and rigid velocities applied.
 void velocities_from_momenta(const Grid& grid, const GridUpdateSettings& settings,

@@ -1,10 +1,13 @@
-// Particle-to-grid scatter with thread-private buffers.
+// Particle-to-grid scatter: each share of points writes the nodes it alone touches straight
+// into the grid fields and its contested nodes into a small buffer (mpm/point_shares.h).
 #include "mpm/particle_to_grid.h"
 
+#include "mpm/point_shares.h"
 #include "mpm/stencil.h"
 
 #include <omp.h>
 
+#include <array>
 #include <cmath>
 
 namespace vulnus::mpm
@@ -13,37 +16,50 @@ void mark_active_nodes(const Particles& particles, const TransferSettings& setti
 {
   grid.clear_active_nodes();
   // Marks the n^3 nodes of each point's stencil from its first node; no weights needed.
+  // Sorted points come cell by cell, so a point whose first node repeats the previous one's
+  // marks nothing new.
   const int n = nodes_per_axis(settings.shape);
-  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+  const int n_shares = omp_get_max_threads();
+#pragma omp parallel
   {
-    const double lp = settings.shape == ShapeFunction::linear ? 0.0 : settings.half_size_cells[b];
-    const long begin = particles.begin_of(b), end = particles.end_of(b);
-#pragma omp parallel for schedule(static)
-    for (long p = begin; p < end; ++p)
-    {
-      const Vector3 s = grid.to_cell_units(particles.position[p]);
-      const int i0 = static_cast<int>(std::floor(s[0] - lp));
-      const int j0 = static_cast<int>(std::floor(s[1] - lp));
-      const int k0 = static_cast<int>(std::floor(s[2] - lp));
-      for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-          for (int i = 0; i < n; ++i)
-            grid.mark(grid.node_key(i0 + i, j0 + j, k0 + k));
-    }
+    const int team = omp_get_num_threads();
+    for (int share = omp_get_thread_num(); share < n_shares; share += team)
+      for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+      {
+        const double lp =
+          settings.shape == ShapeFunction::linear ? 0.0 : settings.half_size_cells[b];
+        const ShareRange range =
+          share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
+        std::array<int, 3> previous{{-1, -1, -1}};
+        for (long p = range.begin; p < range.end; ++p)
+        {
+          const Vector3 s = grid.to_cell_units(particles.position[p]);
+          const std::array<int, 3> first{{static_cast<int>(std::floor(s[0] - lp)),
+                                          static_cast<int>(std::floor(s[1] - lp)),
+                                          static_cast<int>(std::floor(s[2] - lp))}};
+          if (first == previous && p > range.begin)
+            continue;
+          previous = first;
+          for (int k = 0; k < n; ++k)
+            for (int j = 0; j < n; ++j)
+              for (int i = 0; i < n; ++i)
+                grid.mark(grid.node_key(first[0] + i, first[1] + j, first[2] + k), share);
+        }
+      }
   }
-  grid.number_active_nodes();
+  grid.number_active_nodes(n_shares);
 }
 
 namespace
 {
 template <ShapeFunction shape, bool with_force, bool with_normals>
 void scatter(const Particles& particles, const Grid& grid, const TransferSettings& settings,
-             const std::size_t n_bodies, std::vector<NodeBodyData>& out, const std::size_t b,
-             const long begin, const long end)
+             const std::size_t b, const ShareRange range, NodeBodyData* fields,
+             NodeBodyData* contested)
 {
+  const std::size_t n_bodies = particles.n_bodies();
   const double lp = settings.half_size_cells[b];
-#pragma omp for schedule(static) nowait
-  for (long p = begin; p < end; ++p)
+  for (long p = range.begin; p < range.end; ++p)
   {
     const double m = particles.mass[p];
     const Vector3 mv = m * particles.velocity[p];
@@ -53,7 +69,8 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
                       full_tensor(particles.stress[p]);
     for_each_node<shape>(grid, lp, particles.position[p],
                          [&](const std::int64_t key, const double w, const Vector3& grad_w) {
-                           NodeBodyData& node = out[grid.slot(key) * n_bodies + b];
+                           NodeBodyData& node =
+                             scatter_target(grid, grid.slot(key), n_bodies, b, fields, contested);
                            node.mass += w * m;
                            node.momentum += w * mv;
                            if constexpr (with_force)
@@ -66,48 +83,39 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
 } // namespace
 
 void particles_to_grid(const Particles& particles, const Grid& grid,
-                       const TransferSettings& settings, const bool with_force,
-                       ScatterBuffers& buffers, GridFields& fields)
+                       const TransferSettings& settings, ScatterBuffers& buffers,
+                       GridFields& fields)
 {
   const std::size_t n_bodies = particles.n_bodies();
   fields.n_bodies = n_bodies;
-  const std::size_t n_entries = grid.n_active() * n_bodies;
+  const long n_entries = static_cast<long>(grid.n_active() * n_bodies);
   fields.resize(grid.n_active());
-  const int n_threads = omp_get_max_threads();
-  buffers.per_thread.resize(n_threads);
+  size_and_clear_contested(grid, n_bodies, buffers.per_share);
+  const int n_shares = grid.n_point_shares();
 
   with_shape(settings.shape, [&](auto shape_constant) {
     constexpr ShapeFunction shape = decltype(shape_constant)::value;
-#pragma omp parallel num_threads(n_threads)
+#pragma omp parallel
     {
-      const int t = omp_get_thread_num();
-      std::vector<NodeBodyData>& out = t == 0 ? fields.data : buffers.per_thread[t];
-      if (t != 0)
-        out.resize(n_entries);
-#pragma omp barrier
-      // Every thread clears an equal share of every buffer (fields.data included).
 #pragma omp for schedule(static)
-      for (long e = 0; e < static_cast<long>(n_entries); ++e)
-      {
+      for (long e = 0; e < n_entries; ++e)
         fields.data[e] = NodeBodyData();
-        for (int other = 1; other < n_threads; ++other)
-          buffers.per_thread[other][e] = NodeBodyData();
-      }
-      for (std::size_t b = 0; b < n_bodies; ++b)
-      {
-        const long begin = particles.begin_of(b), end = particles.end_of(b);
-        if (with_force && settings.contact_normals)
-          scatter<shape, true, true>(particles, grid, settings, n_bodies, out, b, begin, end);
-        else if (with_force)
-          scatter<shape, true, false>(particles, grid, settings, n_bodies, out, b, begin, end);
-        else
-          scatter<shape, false, false>(particles, grid, settings, n_bodies, out, b, begin, end);
-      }
+      const int team = omp_get_num_threads();
+      for (int share = omp_get_thread_num(); share < n_shares; share += team)
+        for (std::size_t b = 0; b < n_bodies; ++b)
+        {
+          const ShareRange range =
+            share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
+          NodeBodyData* contested = buffers.per_share[share].data();
+          if (settings.contact_normals)
+            scatter<shape, true, true>(particles, grid, settings, b, range, fields.data.data(),
+                                       contested);
+          else
+            scatter<shape, true, false>(particles, grid, settings, b, range, fields.data.data(),
+                                        contested);
+        }
 #pragma omp barrier
-#pragma omp for schedule(static)
-      for (long e = 0; e < static_cast<long>(n_entries); ++e)
-        for (int other = 1; other < n_threads; ++other)
-          fields.data[e].add(buffers.per_thread[other][e]);
+      add_contested(grid, n_bodies, buffers.per_share, fields.data.data());
     }
   });
 }

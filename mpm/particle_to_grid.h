@@ -1,30 +1,25 @@
 // Particle-to-grid stage: marks the active nodes, then scatters mass, momentum, internal
 // force (-V sigma grad w) and, for contact, mass gradients into per-body node fields.
-// Threads scatter into private buffers that are summed afterwards, so the result depends on
-// the thread count only through the order of floating-point additions.
+// Each share of points writes its own nodes directly and its contested ones into a buffer that
+// is summed afterwards (mpm/point_shares.h), so the result depends on the thread count only
+// through the order of floating-point additions at the seams.
 #pragma once
 
 #include "mpm/grid.h"
 #include "mpm/grid_fields.h"
 #include "mpm/particles.h"
+#include "mpm/point_shares.h"
 #include "mpm/transfer_settings.h"
-
-#include <vector>
 
 namespace vulnus::mpm
 {
-/// Clears the previous active set and marks every node any point touches; numbers them.
+/// Clears the previous active set and marks every node any point touches, recording which
+/// share of points (one per thread) touches it; numbers them.
 void mark_active_nodes(const Particles& particles, const TransferSettings& settings, Grid& grid);
 
-/// Per-thread scratch space reused across steps.
-struct ScatterBuffers
-{
-  std::vector<std::vector<NodeBodyData>> per_thread;
-};
-
-/// Fills fields.data (mass, momentum, force, mass gradient). With_force false skips the
-/// stress divergence (used by MUSL's velocity re-projection).
+/// Fills fields.data (mass, momentum, force, mass gradient) on the nodes mark_active_nodes
+/// numbered.
 void particles_to_grid(const Particles& particles, const Grid& grid,
-                       const TransferSettings& settings, bool with_force,
-                       ScatterBuffers& buffers, GridFields& fields);
+                       const TransferSettings& settings, ScatterBuffers& buffers,
+                       GridFields& fields);
 } // namespace vulnus::mpm

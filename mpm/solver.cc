@@ -167,7 +167,7 @@ void Solver::advance(const double cap)
   lap(timings.time_step);
 
   mark_active_nodes(particles, transfer, grid);
-  particles_to_grid(particles, grid, transfer, true, buffers, fields);
+  particles_to_grid(particles, grid, transfer, buffers, fields);
   sum_node_data_with_neighbours();
   lap(timings.particle_to_grid);
 
@@ -185,12 +185,11 @@ void Solver::advance(const double cap)
   }
 
   kinematics.time_step = dt;
-  update_point_kinematics(grid, transfer, kinematics, fields, particles);
   const bool musl = parameters.update_scheme == UpdateScheme::musl;
+  update_point_kinematics(grid, transfer, kinematics, fields, particles, musl ? &buffers : nullptr);
   if (musl)
   {
-    particles_to_grid(particles, grid, transfer, false, buffers, fields);
-    sum_node_data_with_neighbours();
+    sum_projected_momenta_with_neighbours();
     velocities_from_momenta(grid, grid_settings, fields);
     if (shared.partner)
       impose_shared_velocities(fields.velocity);

@@ -155,6 +155,7 @@ private:
   void rebalance_slabs();
   void migrate_points(bool to_any_rank);
   void sum_node_data_with_neighbours();
+  void sum_projected_momenta_with_neighbours();
   void reduce_contact_result();
   void remove_points_outside_grid();
   std::string describe_point(std::size_t p) const;

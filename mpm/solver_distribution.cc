@@ -123,16 +123,21 @@ void Solver::migrate_points(const bool to_any_rank)
     exchange_in_place(particles, stays, incoming);
 }
 
-void Solver::sum_node_data_with_neighbours()
+namespace
 {
-  if (!ranks.distributed())
-    return;
+/// Adds the partner ranks' entries (n_bodies per node, any type with +=) of the nodes both
+/// touch to this rank's; marks the nodes shared with a lower rank.
+template <class Entry>
+void sum_entries_with_neighbours(const RankGroup& ranks, const SlabPartition& partition,
+                                 const Grid& grid, const TransferSettings& transfer,
+                                 const std::size_t n_bodies, std::vector<Entry>& entries,
+                                 std::vector<char>& node_shared_with_lower_rank)
+{
   const int me = ranks.rank();
   const int axis = partition.axis();
   const bool linear = transfer.shape == ShapeFunction::linear;
   const int below = linear ? 0 : 1, above = linear ? 1 : 2;
-  const std::size_t n_bodies = fields.n_bodies;
-  const std::size_t record = sizeof(std::int64_t) + n_bodies * sizeof(NodeBodyData);
+  const std::size_t record = sizeof(std::int64_t) + n_bodies * sizeof(Entry);
   std::vector<int> partners;
   for (const int r : {me - 1, me + 1})
     if (r >= 0 && r < ranks.size())
@@ -153,8 +158,8 @@ void Solver::sum_node_data_with_neighbours()
       const std::size_t offset = out.size();
       out.resize(offset + record);
       std::memcpy(out.data() + offset, &key, sizeof(key));
-      std::memcpy(out.data() + offset + sizeof(key), &fields.data[s * n_bodies],
-                  n_bodies * sizeof(NodeBodyData));
+      std::memcpy(out.data() + offset + sizeof(key), &entries[s * n_bodies],
+                  n_bodies * sizeof(Entry));
     }
   }
   const std::vector<std::vector<char>> incoming = ranks.exchange_with(partners, outgoing);
@@ -172,12 +177,27 @@ void Solver::sum_node_data_with_neighbours()
         node_shared_with_lower_rank[slot] = 1;
       for (std::size_t b = 0; b < n_bodies; ++b)
       {
-        NodeBodyData other;
-        std::memcpy(static_cast<void*>(&other), message.data() + offset + sizeof(key) + b * sizeof(NodeBodyData),
-                    sizeof(NodeBodyData));
-        fields.data[slot * n_bodies + b].add(other);
+        Entry other;
+        std::memcpy(static_cast<void*>(&other),
+                    message.data() + offset + sizeof(key) + b * sizeof(Entry), sizeof(Entry));
+        entries[slot * n_bodies + b] += other;
       }
     }
+}
+} // namespace
+
+void Solver::sum_node_data_with_neighbours()
+{
+  if (ranks.distributed())
+    sum_entries_with_neighbours(ranks, partition, grid, transfer, fields.n_bodies, fields.data,
+                                node_shared_with_lower_rank);
+}
+
+void Solver::sum_projected_momenta_with_neighbours()
+{
+  if (ranks.distributed())
+    sum_entries_with_neighbours(ranks, partition, grid, transfer, fields.n_bodies,
+                                fields.projected_momentum, node_shared_with_lower_rank);
 }
 
 void Solver::reduce_contact_result()
