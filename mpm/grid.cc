@@ -8,7 +8,7 @@
 namespace vulnus::mpm
 {
 Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double cell_size)
-  : domain_min(domain_min_), h(cell_size), inverse_h(1.0 / cell_size)
+    : domain_min(domain_min_), h(cell_size), inverse_h(1.0 / cell_size)
 {
   if (!(cell_size > 0.0))
     throw std::invalid_argument("Grid/Cell size: must be positive");

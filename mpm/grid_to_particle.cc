@@ -27,7 +27,8 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
     std::array<double, n * n * n> weights;
     int n_nodes = 0;
     for_each_node<shape>(grid, lp, particles.position[p],
-                         [&](const std::int64_t key, const double w, const Vector3&) {
+                         [&](const std::int64_t key, const double w, const Vector3&)
+                         {
                            const std::int32_t slot = grid.slot(key);
                            const std::size_t e = slot * n_bodies + b;
                            v_pic += w * fields.velocity_new[e];
@@ -51,8 +52,8 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
 } // namespace
 
 void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
-                             const KinematicsSettings& s, GridFields& fields,
-                             Particles& particles, ScatterBuffers* projection)
+                             const KinematicsSettings& s, GridFields& fields, Particles& particles,
+                             ScatterBuffers* projection)
 {
   const std::size_t n_bodies = particles.n_bodies();
   const long n_entries = static_cast<long>(grid.n_active() * n_bodies);
@@ -63,45 +64,48 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
     fields.projected_momentum.resize(n_entries);
     size_and_clear_contested(grid, n_bodies, projection->momentum_per_share);
   }
-  with_shape(transfer.shape, [&](auto shape_constant) {
-    constexpr ShapeFunction shape = decltype(shape_constant)::value;
+  with_shape(transfer.shape,
+             [&](auto shape_constant)
+             {
+               constexpr ShapeFunction shape = decltype(shape_constant)::value;
 #pragma omp parallel
-    {
-      if (projection)
-      {
+               {
+                 if (projection)
+                 {
 #pragma omp for schedule(static)
-        for (long e = 0; e < n_entries; ++e)
-          fields.projected_momentum[e].setZero();
-      }
-      const int team = omp_get_num_threads();
-      for (int share = omp_get_thread_num(); share < n_shares; share += team)
-        for (std::size_t b = 0; b < n_bodies; ++b)
-        {
-          const ShareRange range =
-            share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
-          if (s.body_is_rigid[b])
-          {
-            for (long p = range.begin; p < range.end; ++p)
-              particles.velocity[p] = s.rigid_velocity[b];
-            continue;
-          }
-          const double lp = transfer.half_size_cells[b];
-          if (projection)
-            update_share_velocities<shape, true>(grid, lp, flip, b, range, fields, particles,
-                                                 fields.projected_momentum.data(),
-                                                 projection->momentum_per_share[share].data());
-          else
-            update_share_velocities<shape, false>(grid, lp, flip, b, range, fields, particles,
-                                                  nullptr, nullptr);
-        }
-      if (projection)
-      {
+                   for (long e = 0; e < n_entries; ++e)
+                     fields.projected_momentum[e].setZero();
+                 }
+                 const int team = omp_get_num_threads();
+                 for (int share = omp_get_thread_num(); share < n_shares; share += team)
+                   for (std::size_t b = 0; b < n_bodies; ++b)
+                   {
+                     const ShareRange range =
+                         share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
+                     if (s.body_is_rigid[b])
+                     {
+                       for (long p = range.begin; p < range.end; ++p)
+                         particles.velocity[p] = s.rigid_velocity[b];
+                       continue;
+                     }
+                     const double lp = transfer.half_size_cells[b];
+                     if (projection)
+                       update_share_velocities<shape, true>(
+                           grid, lp, flip, b, range, fields, particles,
+                           fields.projected_momentum.data(),
+                           projection->momentum_per_share[share].data());
+                     else
+                       update_share_velocities<shape, false>(grid, lp, flip, b, range, fields,
+                                                             particles, nullptr, nullptr);
+                   }
+                 if (projection)
+                 {
 #pragma omp barrier
-        add_contested(grid, n_bodies, projection->momentum_per_share,
-                      fields.projected_momentum.data());
-      }
-    }
-  });
+                   add_contested(grid, n_bodies, projection->momentum_per_share,
+                                 fields.projected_momentum.data());
+                 }
+               }
+             });
 }
 
 void update_deformation_gradients_and_positions(const Grid& grid, const TransferSettings& transfer,
@@ -112,51 +116,55 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
 {
   const std::size_t n_bodies = particles.n_bodies();
   const double dt = s.time_step;
-  with_shape(transfer.shape, [&](auto shape_constant) {
-    constexpr ShapeFunction shape = decltype(shape_constant)::value;
-    for (std::size_t b = 0; b < n_bodies; ++b)
-    {
-      const long begin = particles.begin_of(b), end = particles.end_of(b);
-      if (s.body_is_rigid[b])
-      {
-        const Vector3 step = dt * s.rigid_velocity[b];
+  with_shape(transfer.shape,
+             [&](auto shape_constant)
+             {
+               constexpr ShapeFunction shape = decltype(shape_constant)::value;
+               for (std::size_t b = 0; b < n_bodies; ++b)
+               {
+                 const long begin = particles.begin_of(b), end = particles.end_of(b);
+                 if (s.body_is_rigid[b])
+                 {
+                   const Vector3 step = dt * s.rigid_velocity[b];
 #pragma omp parallel for schedule(static)
-        for (long p = begin; p < end; ++p)
-        {
-          particles.position[p] += step;
-          if (volumetric_rate)
-            volumetric_rate[p] = 0.0;
-        }
-        continue;
-      }
-      const double lp = transfer.half_size_cells[b];
-      // Named here: clang 14 rejects the outer function's parameters inside an OpenMP loop
-      // nested in two lambdas.
-      const std::vector<Vector3>& velocity_new = fields.velocity_new;
-      const std::vector<Vector3>& velocity_for_gradient = gradient_velocity;
+                   for (long p = begin; p < end; ++p)
+                   {
+                     particles.position[p] += step;
+                     if (volumetric_rate)
+                       volumetric_rate[p] = 0.0;
+                   }
+                   continue;
+                 }
+                 const double lp = transfer.half_size_cells[b];
+                 // Named here: clang 14 rejects the outer function's parameters inside an OpenMP
+                 // loop nested in two lambdas.
+                 const std::vector<Vector3>& velocity_new = fields.velocity_new;
+                 const std::vector<Vector3>& velocity_for_gradient = gradient_velocity;
 #pragma omp parallel for schedule(static)
-      for (long p = begin; p < end; ++p)
-      {
-        Tensor2 L = Tensor2::Zero();
-        Vector3 v = Vector3::Zero();
-        for_each_node<shape>(grid, lp, particles.position[p],
-                             [&](const std::int64_t key, const double w, const Vector3& grad_w) {
-                               const std::size_t e = grid.slot(key) * n_bodies + b;
-                               L.noalias() += velocity_for_gradient[e] * grad_w.transpose();
-                               v += w * velocity_new[e];
-                             });
-        particles.position[p] += dt * v;
-        Tensor2& F = particles.deformation_gradient[p];
-        const double J_old = volumetric_rate ? F.determinant() : 0.0;
-        F = (Tensor2::Identity() + dt * L) * F;
-        if (volumetric_rate)
-        {
-          const double J_new = F.determinant();
-          volumetric_rate[p] =
-            (J_new > 0.0 && J_old > 0.0) ? std::log(J_new / J_old) / dt : L.trace();
-        }
-      }
-    }
-  });
+                 for (long p = begin; p < end; ++p)
+                 {
+                   Tensor2 L = Tensor2::Zero();
+                   Vector3 v = Vector3::Zero();
+                   for_each_node<shape>(
+                       grid, lp, particles.position[p],
+                       [&](const std::int64_t key, const double w, const Vector3& grad_w)
+                       {
+                         const std::size_t e = grid.slot(key) * n_bodies + b;
+                         L.noalias() += velocity_for_gradient[e] * grad_w.transpose();
+                         v += w * velocity_new[e];
+                       });
+                   particles.position[p] += dt * v;
+                   Tensor2& F = particles.deformation_gradient[p];
+                   const double J_old = volumetric_rate ? F.determinant() : 0.0;
+                   F = (Tensor2::Identity() + dt * L) * F;
+                   if (volumetric_rate)
+                   {
+                     const double J_new = F.determinant();
+                     volumetric_rate[p] =
+                         (J_new > 0.0 && J_old > 0.0) ? std::log(J_new / J_old) / dt : L.trace();
+                   }
+                 }
+               }
+             });
 }
 } // namespace vulnus::mpm

@@ -27,9 +27,9 @@ void mark_active_nodes(const Particles& particles, const TransferSettings& setti
       for (std::size_t b = 0; b < particles.n_bodies(); ++b)
       {
         const double lp =
-          settings.shape == ShapeFunction::linear ? 0.0 : settings.half_size_cells[b];
+            settings.shape == ShapeFunction::linear ? 0.0 : settings.half_size_cells[b];
         const ShareRange range =
-          share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
+            share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
         std::array<int, 3> previous{{-1, -1, -1}};
         for (long p = range.begin; p < range.end; ++p)
         {
@@ -65,12 +65,14 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
     const Vector3 mv = m * particles.velocity[p];
     Tensor2 volume_stress;
     if constexpr (with_force)
-      volume_stress = (particles.reference_volume[p] * particles.deformation_gradient[p].determinant()) *
-                      full_tensor(particles.stress[p]);
+      volume_stress =
+          (particles.reference_volume[p] * particles.deformation_gradient[p].determinant()) *
+          full_tensor(particles.stress[p]);
     for_each_node<shape>(grid, lp, particles.position[p],
-                         [&](const std::int64_t key, const double w, const Vector3& grad_w) {
+                         [&](const std::int64_t key, const double w, const Vector3& grad_w)
+                         {
                            NodeBodyData& node =
-                             scatter_target(grid, grid.slot(key), n_bodies, b, fields, contested);
+                               scatter_target(grid, grid.slot(key), n_bodies, b, fields, contested);
                            node.mass += w * m;
                            node.momentum += w * mv;
                            if constexpr (with_force)
@@ -93,30 +95,32 @@ void particles_to_grid(const Particles& particles, const Grid& grid,
   size_and_clear_contested(grid, n_bodies, buffers.per_share);
   const int n_shares = grid.n_point_shares();
 
-  with_shape(settings.shape, [&](auto shape_constant) {
-    constexpr ShapeFunction shape = decltype(shape_constant)::value;
+  with_shape(settings.shape,
+             [&](auto shape_constant)
+             {
+               constexpr ShapeFunction shape = decltype(shape_constant)::value;
 #pragma omp parallel
-    {
+               {
 #pragma omp for schedule(static)
-      for (long e = 0; e < n_entries; ++e)
-        fields.data[e] = NodeBodyData();
-      const int team = omp_get_num_threads();
-      for (int share = omp_get_thread_num(); share < n_shares; share += team)
-        for (std::size_t b = 0; b < n_bodies; ++b)
-        {
-          const ShareRange range =
-            share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
-          NodeBodyData* contested = buffers.per_share[share].data();
-          if (settings.contact_normals)
-            scatter<shape, true, true>(particles, grid, settings, b, range, fields.data.data(),
-                                       contested);
-          else
-            scatter<shape, true, false>(particles, grid, settings, b, range, fields.data.data(),
-                                        contested);
-        }
+                 for (long e = 0; e < n_entries; ++e)
+                   fields.data[e] = NodeBodyData();
+                 const int team = omp_get_num_threads();
+                 for (int share = omp_get_thread_num(); share < n_shares; share += team)
+                   for (std::size_t b = 0; b < n_bodies; ++b)
+                   {
+                     const ShareRange range =
+                         share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
+                     NodeBodyData* contested = buffers.per_share[share].data();
+                     if (settings.contact_normals)
+                       scatter<shape, true, true>(particles, grid, settings, b, range,
+                                                  fields.data.data(), contested);
+                     else
+                       scatter<shape, true, false>(particles, grid, settings, b, range,
+                                                   fields.data.data(), contested);
+                   }
 #pragma omp barrier
-      add_contested(grid, n_bodies, buffers.per_share, fields.data.data());
-    }
-  });
+                 add_contested(grid, n_bodies, buffers.per_share, fields.data.data());
+               }
+             });
 }
 } // namespace vulnus::mpm

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <cstdio>
 #include <fstream>
@@ -142,6 +143,53 @@ void report_thread_scaling(const mpm::SceneParameters& scene, const std::size_t 
   }
 }
 
+/// Seconds of `repeats` passes of f on `threads` threads (best of three).
+template <class F>
+double best_time(const int threads, const int repeats, F&& f)
+{
+  double best = 1e300;
+  for (int trial = 0; trial < 3; ++trial)
+  {
+    const double start = omp_get_wtime();
+    for (int r = 0; r < repeats; ++r)
+      f(threads);
+    best = std::min(best, omp_get_wtime() - start);
+  }
+  return best;
+}
+
+/// What this machine allows two threads at best, measured now: a memory-bound triad over
+/// arrays far larger than the caches, and a loop of pure arithmetic. The MPM ratios are to be
+/// read against these.
+void report_machine_ceiling()
+{
+  const long n = 8L << 20; // 3 x 64 MB
+  std::vector<double> a(n, 1.0), b(n, 2.0), c(n, 0.0);
+  const auto triad = [&](const int threads) {
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (long i = 0; i < n; ++i)
+      c[i] = a[i] + 1.0001 * b[i];
+  };
+  volatile double sink = 0.0; // keeps the arithmetic loop from being optimized away
+  const auto arithmetic = [&](const int threads) {
+    double sum = 0.0;
+#pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : sum)
+    for (long i = 0; i < 50'000'000L; ++i)
+    {
+      const double x = 1e-8 * double(i);
+      sum += std::sqrt(x + 1.0) * x;
+    }
+    sink = sink + sum;
+  };
+  const double triad_one = best_time(1, 10, triad), triad_two = best_time(2, 10, triad);
+  const double arithmetic_one = best_time(1, 1, arithmetic),
+               arithmetic_two = best_time(2, 1, arithmetic);
+  std::printf("machine ceiling, same run: 2 threads / 1 thread %.2f for a memory-bound triad "
+              "(%.1f GB/s on 1 thread), %.2f for pure arithmetic\n",
+              triad_one / triad_two, 10 * 3 * 8.0 * n / triad_one / 1e9,
+              arithmetic_one / arithmetic_two);
+}
+
 /// What each skip saves, measured on variants of the scene (issue 8).
 void report_skips(const mpm::SceneParameters& scene, const Measurement& base,
                   const std::size_t warmup, const std::size_t steps)
@@ -258,6 +306,7 @@ int main(int argc, char** argv)
               linear[1].point_steps_per_second / linear[0].point_steps_per_second,
               gimp[1].point_steps_per_second / gimp[0].point_steps_per_second);
   report_thread_scaling(parameters.scene, warmup, steps, repeats);
+  report_machine_ceiling();
   std::printf("GIMP / linear (2 threads): %.2f\n",
               gimp[1].point_steps_per_second / linear[1].point_steps_per_second);
   std::printf("resident memory of the first scene: %.0f B/point (growth of the resident set over "

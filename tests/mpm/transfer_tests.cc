@@ -55,7 +55,7 @@ Scene random_scene(const ShapeFunction shape)
   Scene s;
   std::mt19937 random(11);
   std::uniform_real_distribution<double> coordinate(0.2e-3, 5.8e-3), unit(-1.0, 1.0),
-    positive(0.5, 1.5);
+      positive(0.5, 1.5);
   for (int b = 0; b < 2; ++b)
   {
     s.particles.start_body();
@@ -81,8 +81,8 @@ Scene random_scene(const ShapeFunction shape)
 
 /// Weights and gradients of the n^3 nodes of x (some may be zero), by the tensor product of
 /// the 1D functions.
-std::map<std::int64_t, std::pair<double, Vector3>> stencil(const Grid& grid, const ShapeFunction shape,
-                                                           const double lp, const Vector3& x)
+std::map<std::int64_t, std::pair<double, Vector3>>
+stencil(const Grid& grid, const ShapeFunction shape, const double lp, const Vector3& x)
 {
   const Vector3 s = grid.to_cell_units(x);
   AxisWeights w[3];
@@ -102,7 +102,7 @@ std::map<std::int64_t, std::pair<double, Vector3>> stencil(const Grid& grid, con
                                w[0].value[i] * w[1].derivative[j] * w[2].value[k],
                                w[0].value[i] * w[1].value[j] * w[2].derivative[k]);
         nodes[grid.node_key(w[0].first_node + i, w[1].first_node + j, w[2].first_node + k)] = {
-          weight, gradient};
+            weight, gradient};
       }
   return nodes;
 }
@@ -165,13 +165,13 @@ void check_shares(const ShapeFunction shape, const int n_shares, const int team)
   // Sums in another order: a few ulps of the largest entry.
   const auto mass = [](const NodeBodyData& d) { return Vector3(d.mass, 0.0, 0.0); };
   EXPECT_LT(relative_difference(
-              s, expected, [&](std::size_t e) { return mass(fields.data[e]); }, mass),
+                s, expected, [&](std::size_t e) { return mass(fields.data[e]); }, mass),
             1e-13);
   for (Vector3 NodeBodyData::*member :
        {&NodeBodyData::momentum, &NodeBodyData::force, &NodeBodyData::mass_gradient})
     EXPECT_LT(relative_difference(
-                s, expected, [&](std::size_t e) { return fields.data[e].*member; },
-                [&](const NodeBodyData& d) { return d.*member; }),
+                  s, expected, [&](std::size_t e) { return fields.data[e].*member; },
+                  [&](const NodeBodyData& d) { return d.*member; }),
               1e-13);
 
   // MUSL: pure PIC velocities from a random nodal field, projected back as momenta.
@@ -198,8 +198,8 @@ void check_shares(const ShapeFunction shape, const int n_shares, const int team)
         projected[key * 2 + b].momentum += wg.first * s.particles.mass[p] * v;
     }
   EXPECT_LT(relative_difference(
-              s, projected, [&](std::size_t e) { return fields.projected_momentum[e]; },
-              [](const NodeBodyData& d) { return d.momentum; }),
+                s, projected, [&](std::size_t e) { return fields.projected_momentum[e]; },
+                [](const NodeBodyData& d) { return d.momentum; }),
             1e-13);
   omp_set_num_threads(max_threads);
 }
