@@ -84,43 +84,54 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
 }
 } // namespace
 
+namespace
+{
+template <ShapeFunction shape>
+void scatter_all_bodies(const Particles& particles, const Grid& grid,
+                        const TransferSettings& settings, ScatterBuffers& buffers,
+                        GridFields& fields)
+{
+  const std::size_t n_bodies = particles.n_bodies();
+  const long n_entries = static_cast<long>(grid.n_active() * n_bodies);
+  const int n_shares = grid.n_point_shares();
+#pragma omp parallel
+  {
+#pragma omp for schedule(static)
+    for (long e = 0; e < n_entries; ++e)
+      fields.data[e] = NodeBodyData();
+    const int team = omp_get_num_threads();
+    for (int share = omp_get_thread_num(); share < n_shares; share += team)
+    {
+      clear_contested(buffers.per_share[share], NodeBodyData());
+      NodeBodyData* contested = buffers.per_share[share].data();
+      for (std::size_t b = 0; b < n_bodies; ++b)
+      {
+        const ShareRange range =
+          share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
+        if (settings.contact_normals)
+          scatter<shape, true, true>(particles, grid, settings, b, range, fields.data.data(),
+                                     contested);
+        else
+          scatter<shape, true, false>(particles, grid, settings, b, range, fields.data.data(),
+                                      contested);
+      }
+    }
+#pragma omp barrier
+    add_contested(grid, n_bodies, buffers.per_share, fields.data.data());
+  }
+}
+} // namespace
+
 void particles_to_grid(const Particles& particles, const Grid& grid,
                        const TransferSettings& settings, ScatterBuffers& buffers,
                        GridFields& fields)
 {
-  const std::size_t n_bodies = particles.n_bodies();
-  fields.n_bodies = n_bodies;
-  const long n_entries = static_cast<long>(grid.n_active() * n_bodies);
+  fields.n_bodies = particles.n_bodies();
   fields.resize(grid.n_active());
-  size_and_clear_contested(grid, n_bodies, buffers.per_share);
-  const int n_shares = grid.n_point_shares();
-
-  with_shape(settings.shape,
-             [&](auto shape_constant)
-             {
-               constexpr ShapeFunction shape = decltype(shape_constant)::value;
-#pragma omp parallel
-               {
-#pragma omp for schedule(static)
-                 for (long e = 0; e < n_entries; ++e)
-                   fields.data[e] = NodeBodyData();
-                 const int team = omp_get_num_threads();
-                 for (int share = omp_get_thread_num(); share < n_shares; share += team)
-                   for (std::size_t b = 0; b < n_bodies; ++b)
-                   {
-                     const ShareRange range =
-                         share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
-                     NodeBodyData* contested = buffers.per_share[share].data();
-                     if (settings.contact_normals)
-                       scatter<shape, true, true>(particles, grid, settings, b, range,
-                                                  fields.data.data(), contested);
-                     else
-                       scatter<shape, true, false>(particles, grid, settings, b, range,
-                                                   fields.data.data(), contested);
-                   }
-#pragma omp barrier
-                 add_contested(grid, n_bodies, buffers.per_share, fields.data.data());
-               }
-             });
+  size_contested(grid, fields.n_bodies, buffers.per_share);
+  if (settings.shape == ShapeFunction::linear)
+    scatter_all_bodies<ShapeFunction::linear>(particles, grid, settings, buffers, fields);
+  else
+    scatter_all_bodies<ShapeFunction::gimp>(particles, grid, settings, buffers, fields);
 }
 } // namespace vulnus::mpm

@@ -9,6 +9,7 @@
 #include "mpm/grid.h"
 #include "mpm/grid_fields.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -19,11 +20,13 @@ struct ShareRange
   long begin = 0, end = 0;
 };
 
-/// Points [begin, end) of one body cut into n_shares nearly equal consecutive pieces.
+/// Points [begin, end) of one body cut into n_shares consecutive pieces whose sizes differ by
+/// at most one, the larger ones first (the split of an OpenMP static schedule).
 inline ShareRange share_of(const long begin, const long end, const int share, const int n_shares)
 {
-  const long n = end - begin;
-  return {begin + n * share / n_shares, begin + n * (share + 1) / n_shares};
+  const long n = end - begin, size = n / n_shares, larger = n % n_shares;
+  const long first = begin + share * size + std::min<long>(share, larger);
+  return {first, first + size + (share < larger ? 1 : 0)};
 }
 
 /// Per-share buffers of the contested nodes, reused across steps.
@@ -43,14 +46,22 @@ inline Entry& scatter_target(const Grid& grid, const std::int32_t slot, const st
   return c < 0 ? fields[slot * n_bodies + body] : contested[c * n_bodies + body];
 }
 
-/// Per-share buffers of the contested entries (n_contested x n_bodies each), cleared.
+/// Sizes the per-share buffers of the contested entries (n_contested x n_bodies each); each
+/// share's thread clears its own (clear_contested) before scattering.
 template <class Entry>
-void size_and_clear_contested(const Grid& grid, const std::size_t n_bodies,
-                              std::vector<std::vector<Entry>>& per_share)
+void size_contested(const Grid& grid, const std::size_t n_bodies,
+                    std::vector<std::vector<Entry>>& per_share)
 {
   per_share.resize(grid.n_point_shares());
   for (std::vector<Entry>& buffer : per_share)
-    buffer.assign(grid.n_contested() * n_bodies, Entry());
+    buffer.resize(grid.n_contested() * n_bodies);
+}
+
+/// Sets every entry to zero (Eigen vectors have no zeroing default constructor).
+template <class Entry>
+void clear_contested(std::vector<Entry>& buffer, const Entry& zero)
+{
+  std::fill(buffer.begin(), buffer.end(), zero);
 }
 
 /// Inside a parallel region, after a barrier: adds every share's contested entries, in share

@@ -40,6 +40,25 @@ TEST(GridMarks, ANodeTwoSharesTouchIsContested)
   EXPECT_EQ(grid.n_contested(), 0u);
 }
 
+TEST(PointShares, SharesTileTheRangeInPiecesOfNearlyEqualSize)
+{
+  for (const long n : {0L, 1L, 7L, 100L, 101L})
+    for (const int n_shares : {1, 2, 3, 8})
+    {
+      long next = 5, smallest = n, largest = 0;
+      for (int share = 0; share < n_shares; ++share)
+      {
+        const ShareRange range = share_of(5, 5 + n, share, n_shares);
+        EXPECT_EQ(range.begin, next);
+        smallest = std::min(smallest, range.end - range.begin);
+        largest = std::max(largest, range.end - range.begin);
+        next = range.end;
+      }
+      EXPECT_EQ(next, 5 + n);
+      EXPECT_LE(largest - smallest, 1);
+    }
+}
+
 namespace
 {
 struct Scene
