@@ -248,6 +248,10 @@ void FarFieldSolver::advance_implicit(const double dt)
   ImplicitStepStatistics& stats = d.implicit_statistics;
   stats = ImplicitStepStatistics();
   double first_residual = 0.0, previous_residual = 0.0, last_correction = 0.0;
+  // Corrections below 1e-12 of the smallest cell (root mean square per dof) change strains by
+  // less than F = I + grad u resolves near rest: the step is converged to round-off.
+  const double correction_floor =
+      1e-12 * d.prm.interface_cell_size * std::sqrt(double(d.displacement.size()));
   double step_increment = 0.0;
   bool converged = false;
   EvaluationSums sums;
@@ -288,7 +292,8 @@ void FarFieldSolver::advance_implicit(const double dt)
     if (residual <= d.prm.newton_absolute_tolerance ||
         residual <= d.prm.newton_relative_tolerance * scale || stagnated ||
         (it > 0 &&
-         last_correction <= std::max(d.prm.newton_relative_tolerance, 1e-10) * step_increment))
+         (last_correction <= std::max(d.prm.newton_relative_tolerance, 1e-10) * step_increment ||
+          last_correction <= correction_floor)))
     {
       converged = true;
       break;
