@@ -117,7 +117,8 @@ struct FeSceneParameters
   /// Newton converges when |r| <= relative tolerance * max(|r_0|, |f_int|) (|f_int| alone in
   /// the first iteration), or |r| <= absolute tolerance, or the last correction |du| <=
   /// max(relative tolerance, 1e-10) * |u_{n+1} - u_n| or <= 1e-12 * interface cell size *
-  /// sqrt(n dofs) (a far field at rest: strains at round-off), or the residual stops falling
+  /// sqrt(n dofs) with |r| <= |r_0| / 10 (a far field at rest: strains at round-off), or the
+  /// residual stops falling
   /// (|r_k| > |r_{k-1}| / 2, k >= 2) below 1e-4 of the force scale (round-off floor).
   double newton_relative_tolerance = 1.0e-8;
   double newton_absolute_tolerance = 0.0; ///< N; 0: relative test only

@@ -249,7 +249,8 @@ void FarFieldSolver::advance_implicit(const double dt)
   stats = ImplicitStepStatistics();
   double first_residual = 0.0, previous_residual = 0.0, last_correction = 0.0;
   // Corrections below 1e-12 of the smallest cell (root mean square per dof) change strains by
-  // less than F = I + grad u resolves near rest: the step is converged to round-off.
+  // less than F = I + grad u resolves near rest: once Newton has cut the residual tenfold,
+  // the step is converged to round-off.
   const double correction_floor =
       1e-12 * d.prm.interface_cell_size * std::sqrt(double(d.displacement.size()));
   double step_increment = 0.0;
@@ -293,7 +294,7 @@ void FarFieldSolver::advance_implicit(const double dt)
         residual <= d.prm.newton_relative_tolerance * scale || stagnated ||
         (it > 0 &&
          (last_correction <= std::max(d.prm.newton_relative_tolerance, 1e-10) * step_increment ||
-          last_correction <= correction_floor)))
+          (last_correction <= correction_floor && residual <= 0.1 * first_residual))))
     {
       converged = true;
       break;

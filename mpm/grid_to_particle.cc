@@ -4,6 +4,8 @@
 
 #include "mpm/stencil.h"
 
+#include <omp.h>
+
 #include <array>
 #include <cmath>
 
