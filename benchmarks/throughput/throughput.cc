@@ -45,7 +45,7 @@ struct Measurement
   double seconds = 0.0;
   std::size_t points = 0, steps = 0;
   double resident_bytes_per_point = 0.0;
-  std::size_t active_nodes = 0, box_nodes = 0, contact_nodes = 0;
+  std::size_t active_nodes = 0, box_nodes = 0, contact_nodes = 0, seam_nodes = 0;
   double time_step = 0.0;
 };
 
@@ -87,6 +87,7 @@ Measurement measure(mpm::SceneParameters scene, const int threads, const mpm::Sh
   m.active_nodes = solver->active_nodes();
   m.time_step = solver->last_time_step();
   m.box_nodes = solver->background_grid().n_box_nodes();
+  m.seam_nodes = solver->background_grid().n_contested();
   m.contact_nodes = solver->contact_nodes();
   return m;
 }
@@ -203,6 +204,9 @@ void report_skips(const mpm::SceneParameters& scene, const Measurement& base,
               "dense grid's work\n",
               base.active_nodes, base.box_nodes, 100.0 * base.active_nodes / base.box_nodes,
               100.0 * base.active_nodes / base.box_nodes);
+  std::printf("  thread-private node fields: none; %zu seam nodes of %zu active (%.1f %%) touched by "
+              "two threads' points go through per-thread buffers\n",
+              base.seam_nodes, base.active_nodes, 100.0 * base.seam_nodes / base.active_nodes);
   std::printf("  contact pass: %.1f ns/point-step (%.1f %% of the step) at %zu nodes where bodies "
               "meet; skipped entirely with one body or contact off\n",
               per * base.phases.contact, 100.0 * base.phases.contact / base.phases.total(),
