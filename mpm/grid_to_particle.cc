@@ -4,8 +4,6 @@
 
 #include "mpm/stencil.h"
 
-#include <omp.h>
-
 #include <array>
 #include <cmath>
 
@@ -52,71 +50,43 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
     }
   }
 }
-
-template <ShapeFunction shape>
-void update_all_velocities(const Grid& grid, const TransferSettings& transfer,
-                           const KinematicsSettings& s, GridFields& fields, Particles& particles,
-                           ScatterBuffers* projection)
-{
-  const std::size_t n_bodies = particles.n_bodies();
-  const long n_entries = static_cast<long>(grid.n_active() * n_bodies);
-  const int n_shares = grid.n_point_shares();
-#pragma omp parallel
-  {
-    if (projection)
-    {
-#pragma omp for schedule(static)
-      for (long e = 0; e < n_entries; ++e)
-        fields.projected_momentum[e].setZero();
-    }
-    const int team = omp_get_num_threads();
-    for (int share = omp_get_thread_num(); share < n_shares; share += team)
-    {
-      if (projection)
-        clear_contested(projection->momentum_per_share[share], Vector3::Zero().eval());
-      for (std::size_t b = 0; b < n_bodies; ++b)
-      {
-        const ShareRange range =
-          share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
-        if (s.body_is_rigid[b])
-        {
-          for (long p = range.begin; p < range.end; ++p)
-            particles.velocity[p] = s.rigid_velocity[b];
-          continue;
-        }
-        const double lp = transfer.half_size_cells[b];
-        if (projection)
-          update_share_velocities<shape, true>(grid, lp, s.flip_fraction, b, range, fields,
-                                               particles, fields.projected_momentum.data(),
-                                               projection->momentum_per_share[share].data());
-        else
-          update_share_velocities<shape, false>(grid, lp, s.flip_fraction, b, range, fields,
-                                                particles, nullptr, nullptr);
-      }
-    }
-    if (projection)
-    {
-#pragma omp barrier
-      add_contested(grid, n_bodies, projection->momentum_per_share,
-                    fields.projected_momentum.data());
-    }
-  }
-}
 } // namespace
 
 void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
                              const KinematicsSettings& s, GridFields& fields, Particles& particles,
                              ScatterBuffers* projection)
 {
-  if (projection)
-  {
-    fields.projected_momentum.resize(grid.n_active() * particles.n_bodies());
-    size_contested(grid, particles.n_bodies(), projection->momentum_per_share);
-  }
-  if (transfer.shape == ShapeFunction::linear)
-    update_all_velocities<ShapeFunction::linear>(grid, transfer, s, fields, particles, projection);
-  else
-    update_all_velocities<ShapeFunction::gimp>(grid, transfer, s, fields, particles, projection);
+  with_shape(
+      transfer.shape,
+      [&](auto shape_constant)
+      {
+        constexpr ShapeFunction shape = decltype(shape_constant)::value;
+        // One share's points of body b; momentum and contested are null without projection.
+        auto update =
+            [&](const std::size_t b, const ShareRange range, Vector3* momentum, Vector3* contested)
+        {
+          if (s.body_is_rigid[b])
+            for (long p = range.begin; p < range.end; ++p)
+              particles.velocity[p] = s.rigid_velocity[b];
+          else if (momentum)
+            update_share_velocities<shape, true>(grid, transfer.half_size_cells[b], s.flip_fraction,
+                                                 b, range, fields, particles, momentum, contested);
+          else
+            update_share_velocities<shape, false>(grid, transfer.half_size_cells[b],
+                                                  s.flip_fraction, b, range, fields, particles,
+                                                  nullptr, nullptr);
+        };
+        if (projection)
+        {
+          fields.projected_momentum.resize(grid.n_active() * particles.n_bodies());
+          scatter_by_shares(grid, particles, Vector3::Zero().eval(), fields.projected_momentum,
+                            projection->momentum_per_share, update);
+        }
+        else
+          visit_shares_in_parallel(particles, grid.n_point_shares(),
+                                   [&](int, const std::size_t b, const ShareRange range)
+                                   { update(b, range, nullptr, nullptr); });
+      });
 }
 
 void update_deformation_gradients_and_positions(const Grid& grid, const TransferSettings& transfer,

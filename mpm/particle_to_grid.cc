@@ -20,23 +20,19 @@ void mark_active_nodes(const Particles& particles, const TransferSettings& setti
   // marks nothing new.
   const int n = nodes_per_axis(settings.shape);
   const int n_shares = omp_get_max_threads();
-#pragma omp parallel
-  {
-    const int team = omp_get_num_threads();
-    for (int share = omp_get_thread_num(); share < n_shares; share += team)
-      for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+  visit_shares_in_parallel(
+      particles, n_shares,
+      [&](const int share, const std::size_t b, const ShareRange range)
       {
         const double lp =
             settings.shape == ShapeFunction::linear ? 0.0 : settings.half_size_cells[b];
-        const ShareRange range =
-            share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
-        std::array<int, 3> previous{{-1, -1, -1}};
+        std::array<int, 3> previous{{0, 0, 0}};
         for (long p = range.begin; p < range.end; ++p)
         {
           const Vector3 s = grid.to_cell_units(particles.position[p]);
-          const std::array<int, 3> first{{static_cast<int>(std::floor(s[0] - lp)),
-                                          static_cast<int>(std::floor(s[1] - lp)),
-                                          static_cast<int>(std::floor(s[2] - lp))}};
+          const std::array<int, 3> first{{first_stencil_node(s[0], lp),
+                                          first_stencil_node(s[1], lp),
+                                          first_stencil_node(s[2], lp)}};
           if (first == previous && p > range.begin)
             continue;
           previous = first;
@@ -45,14 +41,13 @@ void mark_active_nodes(const Particles& particles, const TransferSettings& setti
               for (int i = 0; i < n; ++i)
                 grid.mark(grid.node_key(first[0] + i, first[1] + j, first[2] + k), share);
         }
-      }
-  }
+      });
   grid.number_active_nodes(n_shares);
 }
 
 namespace
 {
-template <ShapeFunction shape, bool with_force, bool with_normals>
+template <ShapeFunction shape, bool with_normals>
 void scatter(const Particles& particles, const Grid& grid, const TransferSettings& settings,
              const std::size_t b, const ShareRange range, NodeBodyData* fields,
              NodeBodyData* contested)
@@ -63,11 +58,9 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
   {
     const double m = particles.mass[p];
     const Vector3 mv = m * particles.velocity[p];
-    Tensor2 volume_stress;
-    if constexpr (with_force)
-      volume_stress =
-          (particles.reference_volume[p] * particles.deformation_gradient[p].determinant()) *
-          full_tensor(particles.stress[p]);
+    const Tensor2 volume_stress =
+        (particles.reference_volume[p] * particles.deformation_gradient[p].determinant()) *
+        full_tensor(particles.stress[p]);
     for_each_node<shape>(grid, lp, particles.position[p],
                          [&](const std::int64_t key, const double w, const Vector3& grad_w)
                          {
@@ -75,49 +68,10 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
                                scatter_target(grid, grid.slot(key), n_bodies, b, fields, contested);
                            node.mass += w * m;
                            node.momentum += w * mv;
-                           if constexpr (with_force)
-                             node.force -= volume_stress * grad_w;
+                           node.force -= volume_stress * grad_w;
                            if constexpr (with_normals)
                              node.mass_gradient += m * grad_w;
                          });
-  }
-}
-} // namespace
-
-namespace
-{
-template <ShapeFunction shape>
-void scatter_all_bodies(const Particles& particles, const Grid& grid,
-                        const TransferSettings& settings, ScatterBuffers& buffers,
-                        GridFields& fields)
-{
-  const std::size_t n_bodies = particles.n_bodies();
-  const long n_entries = static_cast<long>(grid.n_active() * n_bodies);
-  const int n_shares = grid.n_point_shares();
-#pragma omp parallel
-  {
-#pragma omp for schedule(static)
-    for (long e = 0; e < n_entries; ++e)
-      fields.data[e] = NodeBodyData();
-    const int team = omp_get_num_threads();
-    for (int share = omp_get_thread_num(); share < n_shares; share += team)
-    {
-      clear_contested(buffers.per_share[share], NodeBodyData());
-      NodeBodyData* contested = buffers.per_share[share].data();
-      for (std::size_t b = 0; b < n_bodies; ++b)
-      {
-        const ShareRange range =
-          share_of(particles.begin_of(b), particles.end_of(b), share, n_shares);
-        if (settings.contact_normals)
-          scatter<shape, true, true>(particles, grid, settings, b, range, fields.data.data(),
-                                     contested);
-        else
-          scatter<shape, true, false>(particles, grid, settings, b, range, fields.data.data(),
-                                      contested);
-      }
-    }
-#pragma omp barrier
-    add_contested(grid, n_bodies, buffers.per_share, fields.data.data());
   }
 }
 } // namespace
@@ -128,10 +82,21 @@ void particles_to_grid(const Particles& particles, const Grid& grid,
 {
   fields.n_bodies = particles.n_bodies();
   fields.resize(grid.n_active());
-  size_contested(grid, fields.n_bodies, buffers.per_share);
-  if (settings.shape == ShapeFunction::linear)
-    scatter_all_bodies<ShapeFunction::linear>(particles, grid, settings, buffers, fields);
-  else
-    scatter_all_bodies<ShapeFunction::gimp>(particles, grid, settings, buffers, fields);
+  with_shape(settings.shape,
+             [&](auto shape_constant)
+             {
+               constexpr ShapeFunction shape = decltype(shape_constant)::value;
+               scatter_by_shares(grid, particles, NodeBodyData(), fields.data, buffers.per_share,
+                                 [&](const std::size_t b, const ShareRange range,
+                                     NodeBodyData* direct, NodeBodyData* contested)
+                                 {
+                                   if (settings.contact_normals)
+                                     scatter<shape, true>(particles, grid, settings, b, range,
+                                                          direct, contested);
+                                   else
+                                     scatter<shape, false>(particles, grid, settings, b, range,
+                                                           direct, contested);
+                                 });
+             });
 }
 } // namespace vulnus::mpm

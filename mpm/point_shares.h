@@ -8,6 +8,9 @@
 
 #include "mpm/grid.h"
 #include "mpm/grid_fields.h"
+#include "mpm/particles.h"
+
+#include <omp.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -46,38 +49,63 @@ inline Entry& scatter_target(const Grid& grid, const std::int32_t slot, const st
   return c < 0 ? fields[slot * n_bodies + body] : contested[c * n_bodies + body];
 }
 
-/// Sizes the per-share buffers of the contested entries (n_contested x n_bodies each); each
-/// share's thread clears its own (clear_contested) before scattering.
-template <class Entry>
-void size_contested(const Grid& grid, const std::size_t n_bodies,
-                    std::vector<std::vector<Entry>>& per_share)
+/// Inside a parallel region: calls visit(share, body, range) for every body's points of each
+/// share this thread runs (shares t, t + team, ...: any team size covers all shares).
+template <class Visit>
+void visit_own_shares(const Particles& particles, const int n_shares, Visit&& visit)
 {
-  per_share.resize(grid.n_point_shares());
+  const int team = omp_get_num_threads();
+  for (int share = omp_get_thread_num(); share < n_shares; share += team)
+    for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+      visit(share, b, share_of(particles.begin_of(b), particles.end_of(b), share, n_shares));
+}
+
+/// Visits every share's points, each share on one thread of a new parallel region.
+template <class Visit>
+void visit_shares_in_parallel(const Particles& particles, const int n_shares, Visit&& visit)
+{
+#pragma omp parallel
+  visit_own_shares(particles, n_shares, visit);
+}
+
+/// Sums per-point contributions into the grid field `fields` (n_active x n_bodies entries,
+/// sized by the caller) by the shares of the last node marking: zeroes it and the per-share
+/// buffers of the contested nodes, runs scatter(body, range, fields, contested) over every
+/// share's points (each share on one thread; it adds through scatter_target), then adds the
+/// contested buffers in share order. `zero` is the entry's zero (Eigen vectors are not zeroed
+/// by their default constructor).
+template <class Entry, class Scatter>
+void scatter_by_shares(const Grid& grid, const Particles& particles, const Entry& zero,
+                       std::vector<Entry>& fields, std::vector<std::vector<Entry>>& per_share,
+                       Scatter&& scatter)
+{
+  const std::size_t n_bodies = particles.n_bodies();
+  const int n_shares = grid.n_point_shares();
+  per_share.resize(n_shares);
   for (std::vector<Entry>& buffer : per_share)
     buffer.resize(grid.n_contested() * n_bodies);
-}
-
-/// Sets every entry to zero (Eigen vectors have no zeroing default constructor).
-template <class Entry>
-void clear_contested(std::vector<Entry>& buffer, const Entry& zero)
-{
-  std::fill(buffer.begin(), buffer.end(), zero);
-}
-
-/// Inside a parallel region, after a barrier: adds every share's contested entries, in share
-/// order, into the (zero) grid entries of those nodes.
-template <class Entry>
-void add_contested(const Grid& grid, const std::size_t n_bodies,
-                   const std::vector<std::vector<Entry>>& per_share, Entry* fields)
-{
+  const long n_entries = static_cast<long>(fields.size());
   const long n_contested = static_cast<long>(grid.n_contested());
-#pragma omp for schedule(static)
-  for (long c = 0; c < n_contested; ++c)
+#pragma omp parallel
   {
-    const std::size_t slot = grid.contested_slots()[c];
-    for (std::size_t b = 0; b < n_bodies; ++b)
-      for (const std::vector<Entry>& buffer : per_share)
-        fields[slot * n_bodies + b] += buffer[c * n_bodies + b];
+#pragma omp for schedule(static) nowait
+    for (long e = 0; e < n_entries; ++e)
+      fields[e] = zero;
+#pragma omp for schedule(static)
+    for (int share = 0; share < n_shares; ++share)
+      std::fill(per_share[share].begin(), per_share[share].end(), zero);
+    visit_own_shares(particles, n_shares,
+                     [&](const int share, const std::size_t b, const ShareRange range)
+                     { scatter(b, range, fields.data(), per_share[share].data()); });
+#pragma omp barrier
+#pragma omp for schedule(static)
+    for (long c = 0; c < n_contested; ++c)
+    {
+      const std::size_t slot = grid.contested_slots()[c];
+      for (std::size_t b = 0; b < n_bodies; ++b)
+        for (const std::vector<Entry>& buffer : per_share)
+          fields[slot * n_bodies + b] += buffer[c * n_bodies + b];
+    }
   }
 }
 } // namespace vulnus::mpm

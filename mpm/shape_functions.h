@@ -18,12 +18,18 @@ struct AxisWeights
   std::array<double, 3> derivative{}; ///< d value / d x_particle
 };
 
+/// First node along one axis of the stencil of a point at s (cell units), half-size lp in
+/// cells (0 for linear shape functions). The node marking and the transfers must agree on it.
+inline int first_stencil_node(const double s, const double lp)
+{
+  return static_cast<int>(std::floor(s - lp));
+}
+
 /// Linear tent function: s = (x - x_min) / h, nodes floor(s) and floor(s) + 1.
 inline void linear_axis_weights(const double s, const double inverse_h, AxisWeights& w)
 {
-  const double base = std::floor(s);
-  const double xi = s - base;
-  w.first_node = static_cast<int>(base);
+  w.first_node = first_stencil_node(s, 0.0);
+  const double xi = s - w.first_node;
   w.value[0] = 1.0 - xi;
   w.value[1] = xi;
   w.value[2] = 0.0;
@@ -66,7 +72,7 @@ inline void gimp_node_weight(const double r, const double lp, double& value, dou
 inline void gimp_axis_weights(const double s, const double lp, const double inverse_h,
                               AxisWeights& w)
 {
-  const int first = static_cast<int>(std::floor(s - lp));
+  const int first = first_stencil_node(s, lp);
   w.first_node = first;
   for (int k = 0; k < 3; ++k)
   {
