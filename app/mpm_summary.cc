@@ -4,6 +4,8 @@
 #include "app/mpm_history.h"
 #include "mpm/wound_metrics.h"
 
+#include <algorithm>
+
 namespace vulnus::app
 {
 namespace
@@ -58,6 +60,14 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
     bullet["max_von_mises_over_yield"] = solver.peak_von_mises_over_yield()[projectile];
     bullet["position_m"] = {b.centroid[0], b.centroid[1], b.centroid[2]};
     bullet["rigid"] = solver.body_material(projectile).is_rigid();
+    // Fastest point of the other bodies over the run, against the projectile's initial speed.
+    double fastest = 0.0;
+    for (std::size_t other = 0; other < solver.peak_point_speeds().size(); ++other)
+      if (static_cast<int>(other) != projectile)
+        fastest = std::max(fastest, solver.peak_point_speeds()[other]);
+    j["max_target_speed_m_s"] = fastest;
+    j["max_target_speed_over_initial"] =
+      totals.projectile_initial_speed > 0 ? fastest / totals.projectile_initial_speed : 0.0;
   }
   j["bullet"] = bullet;
 

@@ -77,9 +77,10 @@ void TissueHyperelastic<with_fibers>::kirchhoff_parts(const Matrix3<Scalar>& F, 
   if (energies)
     energies->J = value_of(J);
 
-  if (!(failure_flags & matrix_failed))
+  const bool matrix_intact = !(failure_flags & matrix_failed);
+  const Scalar ln_J = log(J);
+  if (matrix_intact)
   {
-    const Scalar ln_J = log(J);
     tau_volumetric = (prm.bulk_modulus * ln_J) * identity;
     const Matrix3<Scalar> B_bar = (J_minus_third * J_minus_third) * (F * F.transpose());
     const Scalar I1 = B_bar.trace();
@@ -103,10 +104,23 @@ void TissueHyperelastic<with_fibers>::kirchhoff_parts(const Matrix3<Scalar>& F, 
     if (energies)
       energies->volumetric_energy = 0.5 * prm.bulk_modulus * value_of(ln_J * ln_J);
   }
+  else if (value_of(J) < 1.0)
+  {
+    // Failed tissue is debris: it keeps the pressure of the volumetric law in compression
+    // (U = K/2 (ln J)^2 for J < 1, 0 beyond: C1 at J = 1), so it is never crushed.
+    tau_volumetric = (prm.bulk_modulus * ln_J) * identity;
+    if (energies)
+      energies->volumetric_energy = 0.5 * prm.bulk_modulus * value_of(ln_J * ln_J);
+  }
 
   if constexpr (with_fibers)
   {
-    const Eigen::Matrix<Scalar, 3, 1> Fa = J_minus_third * (F * a0.cast<Scalar>());
+    // Intact matrix: the uncoupled form on the deviatoric stretch, whose -f/3 I the matrix's
+    // pressure balances. Failed matrix: nothing balances it, so the fibers carry their
+    // uniaxial stress f a (x) a on the total stretch |F a0| (W = F2(lambda), tau = f a (x) a).
+    const Eigen::Matrix<Scalar, 3, 1> Fa =
+        matrix_intact ? Eigen::Matrix<Scalar, 3, 1>(J_minus_third * (F * a0.cast<Scalar>()))
+                      : Eigen::Matrix<Scalar, 3, 1>(F * a0.cast<Scalar>());
     const Scalar I4 = Fa.dot(Fa);
     const Scalar lambda = sqrt(I4);
     if (energies)
@@ -114,7 +128,9 @@ void TissueHyperelastic<with_fibers>::kirchhoff_parts(const Matrix3<Scalar>& F, 
     if (!(failure_flags & fiber_failed) && lambda > Scalar(1.0))
     {
       const Scalar f = fibers.force(lambda);
-      tau_fibers = (f / I4) * (Fa * Fa.transpose()) - (f / 3.0) * identity;
+      tau_fibers = (f / I4) * (Fa * Fa.transpose());
+      if (matrix_intact)
+        tau_fibers -= (f / 3.0) * identity;
       if (energies)
         energies->fiber_energy = fibers.energy(value_of(lambda));
     }
@@ -157,18 +173,19 @@ double TissueHyperelastic<with_fibers>::wave_modulus(const double J, const doubl
                                                      const std::uint8_t flags) const
 {
   double modulus = 0.0;
-  if (!(flags & matrix_failed))
-  {
-    const double bulk_tangent = prm.bulk_modulus * (1.0 - std::log(J)) / J;
-    const double shear_tangent = 2.0 * (prm.c1 + prm.c2 * I1) * I1 / (3.0 * J);
-    modulus += std::max(bulk_tangent, 0.0) + 4.0 / 3.0 * shear_tangent;
-  }
+  const bool matrix_intact = !(flags & matrix_failed);
+  if (matrix_intact || J < 1.0)
+    modulus += std::max(prm.bulk_modulus * (1.0 - std::log(J)) / J, 0.0);
+  if (matrix_intact)
+    modulus += 4.0 / 3.0 * 2.0 * (prm.c1 + prm.c2 * I1) * I1 / (3.0 * J);
   if constexpr (with_fibers)
   {
     if (!(flags & fiber_failed) && lambda > 1.0)
       modulus += (fibers.stiffness(lambda) + fibers.force(lambda)) / J;
   }
-  return std::max(modulus, 4.0 / 3.0 * small_strain_shear_modulus);
+  // An intact point never reports less than its small-strain shear wave; failed debris in
+  // tension carries no wave at all and limits the step by its speed alone.
+  return matrix_intact ? std::max(modulus, 4.0 / 3.0 * small_strain_shear_modulus) : modulus;
 }
 
 template <bool with_fibers>
@@ -180,7 +197,8 @@ double TissueHyperelastic<with_fibers>::p_wave_modulus(const Tensor2& F, const V
     throw_inverted(J);
   const double J_minus_third = 1.0 / std::cbrt(J);
   const double I1 = J_minus_third * J_minus_third * F.squaredNorm();
-  const double lambda = with_fibers ? J_minus_third * (F * a0).norm() : 1.0;
+  const double fiber_scale = (flags & matrix_failed) ? 1.0 : J_minus_third;
+  const double lambda = with_fibers ? fiber_scale * (F * a0).norm() : 1.0;
   return wave_modulus(J, I1, lambda, flags);
 }
 
@@ -200,21 +218,16 @@ void TissueHyperelastic<with_fibers>::update_point(const Tensor2& F, const Vecto
   const std::uint8_t newly_failed = flags & ~old_flags;
 
   TissueStressParts parts;
-  kirchhoff_parts(F, a0, old_flags, parts.volumetric, parts.matrix, parts.fibers, &parts);
+  kirchhoff_parts(F, a0, flags, parts.volumetric, parts.matrix, parts.fibers, &parts);
 
+  // A phase that fails releases its stored energy: the energy at F before the failure minus
+  // what the surviving parts store (the failed-matrix fibers measure the total stretch).
   double dissipated = 0.0;
-  if (newly_failed & matrix_failed)
+  if (newly_failed)
   {
-    dissipated += parts.volumetric_energy + parts.matrix_energy;
-    parts.volumetric_energy = parts.matrix_energy = 0.0;
-    parts.volumetric.setZero();
-    parts.matrix.setZero();
-  }
-  if (newly_failed & fiber_failed)
-  {
-    dissipated += parts.fiber_energy;
-    parts.fiber_energy = 0.0;
-    parts.fibers.setZero();
+    TissueStressParts before;
+    kirchhoff_parts(F, a0, old_flags, before.volumetric, before.matrix, before.fibers, &before);
+    dissipated = before.total_energy() - parts.total_energy();
   }
 
   failure = flags;

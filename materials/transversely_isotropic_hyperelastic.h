@@ -40,9 +40,13 @@ struct TissueStressParts
 ///   sigma_fibers = (1/J) f(lambda~) (a (x) a - I/3),   f = lambda dF2/dlambda (WeissFiberLaw)
 ///
 /// Fibers carry no compression (f = 0 for lambda~ < 1). Failure (irreversible, flags in
-/// PointState::failure): a failed matrix zeroes sigma_matrix and sigma_vol, failed fibers
-/// zero sigma_fibers; energy_density counts only intact parts and dissipated_density is the
-/// stored energy of a part at the update where it fails. SI units: Pa, J/m^3.
+/// PointState::failure): a failed matrix zeroes sigma_matrix, and sigma_vol in tension (failed
+/// tissue is debris that still resists compression: sigma_vol = K ln J / J for J < 1); its
+/// fibers then carry their full uniaxial stress (1/J) f(lambda) a (x) a on the total stretch
+/// lambda = |F a0| (nothing balances the -f/3 I of the uncoupled form once the matrix is gone).
+/// Failed fibers zero sigma_fibers. energy_density counts only what the surviving parts store;
+/// dissipated_density is the stored energy lost at the update where a phase fails.
+/// SI units: Pa, J/m^3.
 ///
 /// The template flag selects the fiber code path at compile time: with_fibers = false is the
 /// isotropic Mooney-Rivlin variant ("isotropic hyperelastic"), which does no fiber work.
@@ -50,7 +54,8 @@ struct TissueStressParts
 /// P-wave modulus (time step): M = max(K_t, 0) + 4/3 G_t + (lambda f' + f)/J, with
 /// K_t = J U''(J) = K (1 - ln J)/J (negative for J > e, hence clamped),
 /// G_t = 2 (c1 + c2 I1~) I1~ / (3 J) and the fiber term while fibers are intact and
-/// stretched; never below 4/3 mu0, mu0 = 2 (c1 + c2), so failed points still limit the step.
+/// stretched; an intact point never reports less than 4/3 mu0, mu0 = 2 (c1 + c2). A failed
+/// matrix keeps K_t only in compression and drops G_t: debris in tension has no wave.
 /// det F <= 0 throws std::runtime_error.
 template <bool with_fibers>
 class TissueHyperelastic final : public MaterialBase<TissueHyperelastic<with_fibers>>

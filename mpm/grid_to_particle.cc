@@ -12,8 +12,9 @@ namespace vulnus::mpm
 namespace
 {
 /// Velocity update of the points of one share of one deformable body; with Project, each
-/// point's new momentum goes back to the nodes it read from, with the same weights.
-template <ShapeFunction shape, bool project>
+/// point's new momentum goes back to the nodes it read from, with the same weights (APIC: the
+/// affine momentum m (v + C (x_i - x_p))).
+template <ShapeFunction shape, bool project, bool affine>
 void update_share_velocities(const Grid& grid, const double lp, const double flip,
                              const std::size_t b, const ShareRange range, const GridFields& fields,
                              Particles& particles, Vector3* momentum, Vector3* contested)
@@ -24,29 +25,53 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
   {
     Vector3 v_pic = Vector3::Zero();
     Vector3 dv = Vector3::Zero();
+    Tensor2 C = Tensor2::Zero();
     std::array<std::int32_t, n * n * n> slots;
     std::array<double, n * n * n> weights;
+    std::array<Vector3, affine ? n * n * n : 1> offsets;
     int n_nodes = 0;
     for_each_node<shape>(grid, lp, particles.position[p],
-                         [&](const std::int64_t key, const double w, const Vector3&)
+                         [&](const std::int64_t key, const double w, const Vector3& grad_w,
+                             const Vector3& offset)
                          {
                            const std::int32_t slot = grid.slot(key);
                            const std::size_t e = slot * n_bodies + b;
                            v_pic += w * fields.velocity_new[e];
                            dv += w * (fields.velocity_new[e] - fields.velocity[e]);
+                           if constexpr (affine)
+                             C.noalias() += fields.velocity_new[e] * grad_w.transpose();
                            if constexpr (project)
                            {
                              slots[n_nodes] = slot;
-                             weights[n_nodes++] = w;
+                             weights[n_nodes] = w;
+                             if constexpr (affine)
+                               offsets[n_nodes] = offset;
+                             ++n_nodes;
                            }
                          });
-    const Vector3 v = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
+    const Vector3 v_flip = particles.velocity[p] + dv;
+    const Vector3 v = flip * v_flip + (1.0 - flip) * v_pic;
+    // Kinetic energy the blend takes from the FLIP velocity (PIC's damping), booked as
+    // dissipated so the energy balance closes.
+    particles.dissipated_density[p] += 0.5 * particles.mass[p] *
+                                       (v_flip.squaredNorm() - v.squaredNorm()) /
+                                       particles.reference_volume[p];
     particles.velocity[p] = v;
+    if constexpr (affine)
+      particles.affine_velocity[p] = C.cast<float>();
     if constexpr (project)
     {
-      const Vector3 mv = particles.mass[p] * v;
+      const double m = particles.mass[p];
+      const Vector3 mv = m * v;
+      const Tensor2 mC = m * C;
       for (int i = 0; i < n_nodes; ++i)
-        scatter_target(grid, slots[i], n_bodies, b, momentum, contested) += weights[i] * mv;
+      {
+        Vector3& target = scatter_target(grid, slots[i], n_bodies, b, momentum, contested);
+        if constexpr (affine)
+          target += weights[i] * (mv + mC * offsets[i]);
+        else
+          target += weights[i] * mv;
+      }
     }
   }
 }
@@ -68,13 +93,23 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
           if (s.body_is_rigid[b])
             for (long p = range.begin; p < range.end; ++p)
               particles.velocity[p] = s.rigid_velocity[b];
-          else if (momentum)
-            update_share_velocities<shape, true>(grid, transfer.half_size_cells[b], s.flip_fraction,
-                                                 b, range, fields, particles, momentum, contested);
           else
-            update_share_velocities<shape, false>(grid, transfer.half_size_cells[b],
-                                                  s.flip_fraction, b, range, fields, particles,
-                                                  nullptr, nullptr);
+          {
+            const double lp = transfer.half_size_cells[b];
+            const bool project = momentum != nullptr;
+            if (project && s.affine)
+              update_share_velocities<shape, true, true>(grid, lp, s.flip_fraction, b, range,
+                                                         fields, particles, momentum, contested);
+            else if (project)
+              update_share_velocities<shape, true, false>(grid, lp, s.flip_fraction, b, range,
+                                                          fields, particles, momentum, contested);
+            else if (s.affine)
+              update_share_velocities<shape, false, true>(grid, lp, s.flip_fraction, b, range,
+                                                          fields, particles, nullptr, nullptr);
+            else
+              update_share_velocities<shape, false, false>(grid, lp, s.flip_fraction, b, range,
+                                                           fields, particles, nullptr, nullptr);
+          }
         };
         if (projection)
         {
@@ -97,6 +132,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
 {
   const std::size_t n_bodies = particles.n_bodies();
   const double dt = s.time_step;
+  const bool midpoint = s.deformation_update == DeformationUpdate::midpoint;
   with_shape(transfer.shape,
              [&](auto shape_constant)
              {
@@ -137,7 +173,21 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    particles.position[p] += dt * v;
                    Tensor2& F = particles.deformation_gradient[p];
                    const double J_old = volumetric_rate ? F.determinant() : 0.0;
-                   F = (Tensor2::Identity() + dt * L) * F;
+                   if (particles.failure[p] == materials::total_failure)
+                   {
+                     // Debris keeps only its volume (its law reads J alone); the exponential
+                     // volume update never inverts it, whatever fragments cross its nodes.
+                     const double J = F.determinant() * std::exp(dt * L.trace());
+                     F = std::cbrt(J) * Tensor2::Identity();
+                   }
+                   else if (midpoint)
+                   {
+                     const Tensor2 half_step = (0.5 * dt) * L;
+                     F = (Tensor2::Identity() - half_step).inverse() *
+                         ((Tensor2::Identity() + half_step) * F);
+                   }
+                   else
+                     F = (Tensor2::Identity() + dt * L) * F;
                    if (volumetric_rate)
                    {
                      const double J_new = F.determinant();

@@ -1,7 +1,7 @@
-// Grid-to-particle stage: point velocities (FLIP/PIC blend) from the nodal velocities, for
-// MUSL with their momenta projected back to the nodes in the same pass; then the velocity
-// gradient, the deformation gradient update F <- (I + dt L) F and the position
-// update in one gather. Rigid bodies translate with their rigid velocity.
+// Grid-to-particle stage: point velocities (APIC, or a FLIP/PIC blend) from the nodal
+// velocities, for MUSL with their momenta projected back to the nodes in the same pass; then
+// the velocity gradient, the deformation gradient update (midpoint or forward Euler) and the
+// position update in one gather. Rigid bodies translate with their rigid velocity.
 #pragma once
 
 #include "mpm/grid.h"
@@ -18,6 +18,10 @@ struct KinematicsSettings
 {
   double time_step = 0.0;
   double flip_fraction = 1.0; ///< 1: pure FLIP (velocity increments), 0: pure PIC
+  /// APIC: also store C_p = sum v_i (x) grad w at each point (the scatter's affine part);
+  /// with flip_fraction > 0 the velocity is the FLIP-APIC blend.
+  bool affine = false;
+  DeformationUpdate deformation_update = DeformationUpdate::midpoint;
   std::vector<char> body_is_rigid;
   std::vector<Vector3> rigid_velocity;
 };
@@ -31,10 +35,11 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
                              const KinematicsSettings& settings, GridFields& fields,
                              Particles& particles, ScatterBuffers* projection);
 
-/// One gather per point at its position of step n: F <- (I + dt L) F with
-/// L = sum v_gradient (x) grad w, then x <- x + dt sum w v_new (v_new = fields.velocity_new, the
+/// One gather per point at its position of step n: F <- (I - dt L/2)^-1 (I + dt L/2) F
+/// (midpoint) or F <- (I + dt L) F (forward Euler) with L = sum v_gradient (x) grad w, then x <- x + dt sum w v_new (v_new = fields.velocity_new, the
 /// velocities of the grid update; `gradient_velocity` is the same field for USL and the
-/// re-projected one for MUSL). With a non-null volumetric_rate (sized like the points), writes
+/// re-projected one for MUSL). Totally failed points (debris, whose law reads J alone) keep
+/// F = J^(1/3) I with J <- J exp(dt tr L), which never inverts. With a non-null volumetric_rate (sized like the points), writes
 /// ln(J_new / J_old) / dt of every point into it. Rigid bodies keep F = I and translate.
 void update_deformation_gradients_and_positions(const Grid& grid, const TransferSettings& transfer,
                                                 const KinematicsSettings& settings,

@@ -47,7 +47,7 @@ void mark_active_nodes(const Particles& particles, const TransferSettings& setti
 
 namespace
 {
-template <ShapeFunction shape, bool with_normals>
+template <ShapeFunction shape, bool with_normals, bool affine>
 void scatter(const Particles& particles, const Grid& grid, const TransferSettings& settings,
              const std::size_t b, const ShareRange range, NodeBodyData* fields,
              NodeBodyData* contested)
@@ -58,16 +58,22 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
   {
     const double m = particles.mass[p];
     const Vector3 mv = m * particles.velocity[p];
+    const Tensor2 mC = affine ? Tensor2(m * particles.affine_velocity[p].cast<double>())
+                              : Tensor2::Zero();
     const Tensor2 volume_stress =
         (particles.reference_volume[p] * particles.deformation_gradient[p].determinant()) *
         full_tensor(particles.stress[p]);
     for_each_node<shape>(grid, lp, particles.position[p],
-                         [&](const std::int64_t key, const double w, const Vector3& grad_w)
+                         [&](const std::int64_t key, const double w, const Vector3& grad_w,
+                             const Vector3& offset)
                          {
                            NodeBodyData& node =
                                scatter_target(grid, grid.slot(key), n_bodies, b, fields, contested);
                            node.mass += w * m;
-                           node.momentum += w * mv;
+                           if constexpr (affine)
+                             node.momentum += w * (mv + mC * offset);
+                           else
+                             node.momentum += w * mv;
                            node.force -= volume_stress * grad_w;
                            if constexpr (with_normals)
                              node.mass_gradient += m * grad_w;
@@ -90,12 +96,19 @@ void particles_to_grid(const Particles& particles, const Grid& grid,
                                  [&](const std::size_t b, const ShareRange range,
                                      NodeBodyData* direct, NodeBodyData* contested)
                                  {
-                                   if (settings.contact_normals)
-                                     scatter<shape, true>(particles, grid, settings, b, range,
-                                                          direct, contested);
+                                   const bool n = settings.contact_normals, a = settings.affine;
+                                   if (n && a)
+                                     scatter<shape, true, true>(particles, grid, settings, b,
+                                                                range, direct, contested);
+                                   else if (n)
+                                     scatter<shape, true, false>(particles, grid, settings, b,
+                                                                 range, direct, contested);
+                                   else if (a)
+                                     scatter<shape, false, true>(particles, grid, settings, b,
+                                                                 range, direct, contested);
                                    else
-                                     scatter<shape, false>(particles, grid, settings, b, range,
-                                                           direct, contested);
+                                     scatter<shape, false, false>(particles, grid, settings, b,
+                                                                  range, direct, contested);
                                  });
              });
 }

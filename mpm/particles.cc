@@ -16,6 +16,7 @@ void Particles::append(const Vector3& x, const Vector3& v, const double m, const
   position.push_back(x);
   reference_position.push_back(x.cast<float>());
   velocity.push_back(v);
+  affine_velocity.push_back(Eigen::Matrix3f::Zero());
   deformation_gradient.push_back(Tensor2::Identity());
   stress.push_back(SymmetricTensor::Zero());
   mass.push_back(m);

@@ -43,6 +43,9 @@ struct Particles
   /// Where the point started (wound maps); single precision, 3 nm at 5 cm.
   std::vector<Vector3f> reference_position;
   std::vector<Vector3> velocity;
+  /// APIC affine velocity C_p (the grid velocity gradient at the point, 1/s); zero for
+  /// the other transfers. Single precision: it only shapes the momentum a point lends nodes.
+  std::vector<Eigen::Matrix3f> affine_velocity;
   std::vector<Tensor2> deformation_gradient;
   std::vector<SymmetricTensor> stress; ///< Cauchy stress, Pa
   std::vector<double> mass;
@@ -119,6 +122,7 @@ struct Particles
     f(position);
     f(reference_position);
     f(velocity);
+    f(affine_velocity);
     f(deformation_gradient);
     f(stress);
     f(mass);

@@ -27,6 +27,26 @@ enum class UpdateScheme
   musl ///< modified update stress last (velocities re-mapped before the stress update)
 };
 
+/// How points take their new velocity from the grid (Jiang et al. 2015 for APIC).
+enum class VelocityTransfer
+{
+  /// FLIP velocities relaxed towards APIC's over a fixed physical time (not per step):
+  /// dv_p/dt = FLIP - (v_p - sum w v_i) / tau, with the affine part C_p for the scatter
+  relaxed_apic,
+  /// The same relaxation towards the PIC velocity, without the affine part
+  relaxed_pic,
+  apic, ///< v_p = sum w v_i, plus the affine part C_p = grad v at the point for the scatter
+  flip, ///< v_p += sum w (v_i^(n+1) - v_i^n): no damping, overshoots where nodes jump
+  pic   ///< v_p = sum w v_i: damps every mode the grid cannot hold, including rotation
+};
+
+/// How the deformation gradient follows the velocity gradient L over one step.
+enum class DeformationUpdate
+{
+  midpoint,     ///< F <- (I - dt L / 2)^-1 (I + dt L / 2) F: exact for rigid spin, 2nd order
+  forward_euler ///< F <- (I + dt L) F: stretches a spinning point by (1 + (w dt)^2)^(1/2)
+};
+
 enum class FaceCondition
 {
   free,
@@ -84,7 +104,11 @@ struct NamedMaterial
 
 struct ContactParameters
 {
+  /// false: the bodies share one velocity field (no-slip at every node they share).
   bool enabled = true;
+  /// Bodies pass through each other (no interaction at all); not a deck choice, for tests
+  /// of the transfers that need independent bodies.
+  bool ignore_other_bodies = false;
   double friction_coefficient = 0.08; ///< Coulomb; negative means no-slip (single velocity field)
 };
 
@@ -105,7 +129,10 @@ struct SceneParameters
 
   Vector3 gravity = Vector3::Zero(); ///< body force per unit mass, m/s^2
   double cfl = 0.4;
-  double flip_fraction = 1.0; ///< 1 pure FLIP, 0 pure PIC velocity update
+  VelocityTransfer velocity_transfer = VelocityTransfer::flip;
+  /// relaxed_apic: tau in units of the Courant time h / max(c + |v|) (the CFL-1 step).
+  double velocity_relaxation = 1.0;
+  DeformationUpdate deformation_update = DeformationUpdate::midpoint;
   double end_time = 1.0e-3;           ///< s
   double artificial_viscosity_linear = 0.0;    ///< bulk viscosity coefficients (0 = off)
   double artificial_viscosity_quadratic = 0.0;

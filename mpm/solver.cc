@@ -49,8 +49,18 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   transfer.shape = scene.shape_function;
   for (const BodyParameters& body : scene.bodies)
     transfer.half_size_cells.push_back(0.5 / body.particles_per_cell);
-  contact_active = scene.contact.enabled && n_bodies > 1;
-  transfer.contact_normals = contact_active && scene.contact.friction_coefficient >= 0.0;
+  // Contact off: the bodies share one velocity field, which is the no-slip correction (the
+  // centre-of-mass velocity at every node several bodies reach).
+  contact_active = n_bodies > 1 && !scene.contact.ignore_other_bodies;
+  const bool affine = scene.velocity_transfer == VelocityTransfer::apic ||
+                      scene.velocity_transfer == VelocityTransfer::relaxed_apic;
+  if (affine && contact_active)
+    throw std::invalid_argument(
+        "Grid/Velocity transfer: APIC is unstable where bodies meet (the affine part "
+        "extrapolates the velocities of light contact nodes and inverts points); use relaxed "
+        "PIC in scenes of several bodies");
+  const double friction = scene.contact.enabled ? scene.contact.friction_coefficient : -1.0;
+  transfer.contact_normals = contact_active && friction >= 0.0;
 
   body_mass.assign(n_bodies, 0.0);
   for (std::size_t b = 0; b < n_bodies; ++b)
@@ -61,7 +71,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   grid_settings.faces = scene.domain_faces;
   grid_settings.gravity = scene.gravity;
   grid_settings.contact = contact_active;
-  grid_settings.friction_coefficient = scene.contact.friction_coefficient;
+  grid_settings.friction_coefficient = friction;
   // Any node with mass gets a velocity: p / m is a weighted mean of point velocities even
   // where m is tiny, and zeroing light nodes breaks exact translation.
   grid_settings.mass_tolerance = 0.0;
@@ -70,7 +80,10 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
     grid_settings.body_is_rigid.push_back(materials_of_body[b]->is_rigid());
     grid_settings.rigid_velocity.push_back(scene.bodies[b].initial_velocity);
   }
-  kinematics.flip_fraction = scene.flip_fraction;
+  transfer.affine = affine;
+  kinematics.affine = transfer.affine;
+  kinematics.flip_fraction = scene.velocity_transfer == VelocityTransfer::flip ? 1.0 : 0.0;
+  kinematics.deformation_update = scene.deformation_update;
   kinematics.body_is_rigid = grid_settings.body_is_rigid;
   kinematics.rigid_velocity = grid_settings.rigid_velocity;
 
@@ -81,6 +94,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   for (const BodyParameters& body : scene.bodies)
     stress_settings.body_density.push_back(body.density);
   peak_yield_ratio.assign(n_bodies, 0.0);
+  peak_point_speed.assign(n_bodies, 0.0);
 
   for (std::size_t b = 0; b < n_bodies; ++b)
     if (scene.bodies[b].is_projectile)
@@ -120,22 +134,39 @@ void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& 
 
 double Solver::stable_time_step() const
 {
+  return step_limit(nullptr);
+}
+
+double Solver::step_limit(std::vector<double>* fastest_point_of_body) const
+{
   double fastest = 0.0;
+  if (fastest_point_of_body)
+    fastest_point_of_body->assign(particles.n_bodies(), 0.0);
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
   {
     const long begin = particles.begin_of(b), end = particles.end_of(b);
     if (grid_settings.body_is_rigid[b])
     {
       fastest = std::max(fastest, grid_settings.rigid_velocity[b].norm());
+      if (fastest_point_of_body)
+        (*fastest_point_of_body)[b] = grid_settings.rigid_velocity[b].norm();
       continue;
     }
-    double body_fastest = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : body_fastest)
+    double body_fastest = 0.0, body_speed = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : body_fastest, body_speed)
     for (long p = begin; p < end; ++p)
-      body_fastest = std::max(body_fastest, particles.wave_speed[p] + particles.velocity[p].norm());
+    {
+      const double speed = particles.velocity[p].norm();
+      body_fastest = std::max(body_fastest, particles.wave_speed[p] + speed);
+      body_speed = std::max(body_speed, speed);
+    }
     fastest = std::max(fastest, body_fastest);
+    if (fastest_point_of_body)
+      (*fastest_point_of_body)[b] = body_speed;
   }
   fastest = ranks.max(fastest);
+  if (fastest_point_of_body)
+    ranks.max(fastest_point_of_body->data(), static_cast<int>(fastest_point_of_body->size()));
   const double limit = fastest > 0.0 ? parameters.cfl * parameters.cell_size / fastest
                                      : parameters.max_time_step;
   return std::min(limit, parameters.max_time_step);
@@ -149,7 +180,10 @@ void Solver::advance(const double cap)
     phase += now - clock;
     clock = now;
   };
-  const double stable = stable_time_step();
+  std::vector<double> fastest_point;
+  const double stable = step_limit(&fastest_point);
+  for (std::size_t b = 0; b < fastest_point.size(); ++b)
+    peak_point_speed[b] = std::max(peak_point_speed[b], fastest_point[b]);
   if (!(stable >= parameters.min_time_step))
   {
     std::ostringstream message;
@@ -164,9 +198,18 @@ void Solver::advance(const double cap)
   if (time_step <= 0.0)
     return;
   const double dt = time_step;
+  if (!shared.partner && (parameters.velocity_transfer == VelocityTransfer::relaxed_apic ||
+                          parameters.velocity_transfer == VelocityTransfer::relaxed_pic))
+  {
+    // The FLIP part decays at a rate fixed in time, so the damping of FLIP's noise (and the
+    // drag that repeated damping of a contact layer adds) does not grow with the step count.
+    const double courant_time = stable / parameters.cfl;
+    kinematics.flip_fraction = std::exp(-dt / (parameters.velocity_relaxation * courant_time));
+  }
   lap(timings.time_step);
 
   mark_active_nodes(particles, transfer, grid);
+  n_active_last_step = grid.n_active();
   particles_to_grid(particles, grid, transfer, buffers, fields);
   sum_node_data_with_neighbours();
   lap(timings.particle_to_grid);

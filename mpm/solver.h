@@ -122,6 +122,8 @@ public:
   const std::vector<Vector3>& contact_forces() const { return grid_result.contact_force; }
   /// Kinetic energy removed by contact since the start (J).
   double contact_dissipation() const { return accumulated_contact_dissipation; }
+  /// Largest point speed seen at the start of a step so far, per body (m/s).
+  const std::vector<double>& peak_point_speeds() const { return peak_point_speed; }
   /// Largest von Mises / yield seen so far, per body.
   const std::vector<double>& peak_von_mises_over_yield() const { return peak_yield_ratio; }
   /// Points removed because they left the grid, and the kinetic plus stored energy and the
@@ -133,11 +135,14 @@ public:
   double initial_energy() const { return energy_at_start; }
   /// Number of nodes where bodies met in the last step.
   std::size_t contact_nodes() const { return grid_result.n_contact_nodes; }
-  std::size_t active_nodes() const { return grid.n_active(); }
+  /// Active nodes of the last step (kept across a checkpoint, like the contact results).
+  std::size_t active_nodes() const { return n_active_last_step; }
   bool uses_contact() const { return contact_active; }
   const PhaseTimes& phase_times() const { return timings; }
 
 private:
+  /// The CFL step; with a non-null argument also each body's fastest point speed (collective).
+  double step_limit(std::vector<double>* fastest_point_of_body) const;
   void sort_points();
   void exchange_shared_nodes(double dt);
   void sum_shared_state_over_ranks();
@@ -179,6 +184,7 @@ private:
   std::vector<double> body_mass;
   std::vector<double> volumetric_rate;
   std::vector<double> peak_yield_ratio;
+  std::vector<double> peak_point_speed;
   SharedNodes shared;
   SharedNodeState shared_state;
   std::vector<Vector3> shared_velocity_start, shared_velocity_end;
@@ -194,6 +200,7 @@ private:
   double energy_at_start = 0.0;
   PhaseTimes timings;
   std::size_t n_removed = 0;
+  std::size_t n_active_last_step = 0;
   double outflow_energy = 0.0;
   Vector3 outflow_momentum = Vector3::Zero();
 };

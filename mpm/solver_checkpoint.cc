@@ -14,7 +14,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '4'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '5'};
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -26,6 +26,11 @@ void Solver::save(std::ostream& out) const
   put_vector(out, particles.plastic_pool);
   put_vector(out, grid_settings.rigid_velocity);
   put_vector(out, peak_yield_ratio);
+  put_vector(out, peak_point_speed);
+  // What the history reports of the last step: a run restored at its final step writes it.
+  put_vector(out, grid_result.contact_force);
+  put(out, static_cast<std::uint64_t>(grid_result.n_contact_nodes));
+  put(out, static_cast<std::uint64_t>(n_active_last_step));
   put(out, current_time);
   put(out, time_step);
   put(out, static_cast<std::uint64_t>(n_steps));
@@ -58,6 +63,13 @@ void Solver::restore(std::istream& in)
   std::vector<double> peak;
   get_vector(in, rigid_velocity);
   get_vector(in, peak);
+  std::vector<double> peak_speed;
+  get_vector(in, peak_speed);
+  std::vector<Vector3> contact_force;
+  std::uint64_t contact_nodes = 0, active = 0;
+  get_vector(in, contact_force);
+  get(in, contact_nodes);
+  get(in, active);
   double time = 0, step = 0, contact = 0, energy = 0, outflow = 0;
   std::uint64_t steps = 0, removed = 0;
   Vector3 outflow_p;
@@ -80,7 +92,8 @@ void Solver::restore(std::istream& in)
   bool sizes_agree = loaded.body_begin.size() == n_bodies + 1 && loaded.body_begin.back() == n &&
                      loaded.body_begin.front() == 0 &&
                      std::is_sorted(loaded.body_begin.begin(), loaded.body_begin.end()) &&
-                     rigid_velocity.size() == n_bodies && peak.size() == n_bodies;
+                     rigid_velocity.size() == n_bodies && peak.size() == n_bodies &&
+                     peak_speed.size() == n_bodies;
   loaded.for_each_array([&](const auto& values) { sizes_agree = sizes_agree && values.size() == n; });
   if (!sizes_agree)
     throw std::runtime_error("checkpoint is inconsistent (array sizes differ)");
@@ -107,6 +120,10 @@ void Solver::restore(std::istream& in)
   grid_settings.rigid_velocity = rigid_velocity;
   kinematics.rigid_velocity = rigid_velocity;
   peak_yield_ratio = peak;
+  peak_point_speed = peak_speed;
+  grid_result.contact_force = contact_force;
+  grid_result.n_contact_nodes = contact_nodes;
+  n_active_last_step = active;
   current_time = time;
   time_step = step;
   n_steps = steps;

@@ -282,6 +282,6 @@ std::size_t Solver::n_points_all_ranks() const
 
 std::size_t Solver::active_nodes_all_ranks() const
 {
-  return ranks.sum(static_cast<std::uint64_t>(grid.n_active()));
+  return ranks.sum(static_cast<std::uint64_t>(n_active_last_step));
 }
 } // namespace vulnus::mpm

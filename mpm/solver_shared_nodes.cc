@@ -18,6 +18,10 @@ void Solver::share_nodes(const SharedNodes& nodes)
     if (key < 0 || static_cast<std::size_t>(key) >= grid.n_box_nodes())
       throw std::invalid_argument("share_nodes: node key outside the grid");
   shared = nodes;
+  // The interface impulse m (v_end - v_start) the exchange books is what FLIP gives the
+  // points; a blend with PIC would give them m v_end - p instead. Coupled runs use FLIP.
+  kinematics.flip_fraction = 1.0;
+  kinematics.affine = transfer.affine = false;
   const std::size_t n = nodes.keys.size();
   shared_state.mass.assign(n, 0.0);
   shared_state.momentum.assign(n, Vector3::Zero());

@@ -1,9 +1,12 @@
-// Visits the grid nodes a material point touches with their weight and weight gradient,
-// for linear or uGIMP shape functions (compile-time choice so the loops unroll).
+// Visits the grid nodes a material point touches with their weight and weight gradient (and,
+// for visitors that take it, the node's offset x_i - x_p), for linear or uGIMP shape
+// functions (compile-time choice so the loops unroll).
 #pragma once
 
 #include "mpm/grid.h"
 #include "mpm/shape_functions.h"
+
+#include <type_traits>
 
 namespace vulnus::mpm
 {
@@ -35,8 +38,17 @@ inline void for_each_node(const Grid& grid, const double half_size_cells, const 
           continue;
         const Vector3 gradient(w[0].derivative[i] * wjk, w[0].value[i] * djk,
                                w[0].value[i] * wjdk);
-        visit(grid.node_key(w[0].first_node + i, w[1].first_node + j, w[2].first_node + k),
-              weight, gradient);
+        const std::int64_t key =
+            grid.node_key(w[0].first_node + i, w[1].first_node + j, w[2].first_node + k);
+        if constexpr (std::is_invocable_v<Visitor, std::int64_t, double, const Vector3&,
+                                          const Vector3&>)
+        {
+          const Vector3 offset(w[0].first_node + i - s[0], w[1].first_node + j - s[1],
+                               w[2].first_node + k - s[2]);
+          visit(key, weight, gradient, (grid.cell_size() * offset).eval());
+        }
+        else
+          visit(key, weight, gradient);
       }
     }
 }

@@ -18,58 +18,43 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
                     std::vector<materials::PointResponse>& responses, double& max_ratio)
 {
   double viscous = 0.0;
-  long run_begin = begin;
-  while (run_begin < end)
+  materials::PointBlock block;
+  block.n_points = static_cast<std::size_t>(end - begin);
+  block.deformation_gradients = &particles.deformation_gradient[begin];
+  block.fiber_directions = material.uses_fibers() ? &particles.fiber_direction[begin] : nullptr;
+  block.failure = &particles.failure[begin];
+  if (material.has_plastic_history())
   {
-    // A run of points that still carry stress.
-    while (run_begin < end && particles.failure[run_begin] == materials::total_failure)
-      ++run_begin;
-    long run_end = run_begin;
-    while (run_end < end && particles.failure[run_end] != materials::total_failure)
-      ++run_end;
-    if (run_begin == run_end)
-      break;
-    materials::PointBlock block;
-    block.n_points = static_cast<std::size_t>(run_end - run_begin);
-    block.deformation_gradients = &particles.deformation_gradient[run_begin];
-    block.fiber_directions = material.uses_fibers() ? &particles.fiber_direction[run_begin] : nullptr;
-    block.failure = &particles.failure[run_begin];
-    if (material.has_plastic_history())
+    block.plastic = particles.plastic_pool.data();
+    block.plastic_slots = &particles.plastic_slot[begin];
+  }
+  block.responses = responses.data();
+  material.update_block(block);
+  for (long p = begin; p < end; ++p)
+  {
+    const materials::PointResponse& r = responses[p - begin];
+    const double J = particles.deformation_gradient[p].determinant();
+    const double current_density = density / J;
+    double wave_speed = std::sqrt(r.p_wave_modulus / current_density);
+    Tensor2 sigma = r.cauchy_stress;
+    double dissipated = r.dissipated_density;
+    const double rate = volumetric_rate ? volumetric_rate[p] : 0.0;
+    if (rate < 0.0)
     {
-      block.plastic = particles.plastic_pool.data();
-      block.plastic_slots = &particles.plastic_slot[run_begin];
+      const double h = s.cell_size;
+      const double q = current_density * (s.viscosity_linear * wave_speed * h * -rate +
+                                           s.viscosity_quadratic * h * h * rate * rate);
+      sigma.diagonal().array() -= q;
+      const double viscous_density = q * -rate * J * s.time_step;
+      dissipated += viscous_density;
+      viscous += viscous_density * particles.reference_volume[p];
+      wave_speed += std::sqrt(q / current_density);
     }
-    block.responses = responses.data();
-    material.update_block(block);
-    for (long p = run_begin; p < run_end; ++p)
-    {
-      const materials::PointResponse& r = responses[p - run_begin];
-      const double J = particles.deformation_gradient[p].determinant();
-      const double current_density = density / J;
-      double wave_speed = std::sqrt(r.p_wave_modulus / current_density);
-      Tensor2 sigma = r.cauchy_stress;
-      double dissipated = r.dissipated_density;
-      const double rate = volumetric_rate ? volumetric_rate[p] : 0.0;
-      if (rate < 0.0)
-      {
-        const double h = s.cell_size;
-        const double q = current_density * (s.viscosity_linear * wave_speed * h * -rate +
-                                             s.viscosity_quadratic * h * h * rate * rate);
-        sigma.diagonal().array() -= q;
-        const double viscous_density = q * -rate * J * s.time_step;
-        dissipated += viscous_density;
-        viscous += viscous_density * particles.reference_volume[p];
-        wave_speed += std::sqrt(q / current_density);
-      }
-      particles.stress[p] = symmetric_part(sigma);
-      particles.energy_density[p] = r.energy_density;
-      particles.dissipated_density[p] += dissipated;
-      particles.wave_speed[p] = wave_speed;
-      max_ratio = std::max(max_ratio, r.von_mises_over_yield);
-      if (particles.failure[p] == materials::total_failure)
-        particles.stress[p].setZero();
-    }
-    run_begin = run_end;
+    particles.stress[p] = symmetric_part(sigma);
+    particles.energy_density[p] = r.energy_density;
+    particles.dissipated_density[p] += dissipated;
+    particles.wave_speed[p] = wave_speed;
+    max_ratio = std::max(max_ratio, r.von_mises_over_yield);
   }
   return viscous;
 }

@@ -14,5 +14,7 @@ struct TransferSettings
   std::vector<double> half_size_cells;
   /// Accumulate mass gradients (contact normals); only scenes with contact need them.
   bool contact_normals = false;
+  /// APIC: points scatter the momentum m_p (v_p + C_p (x_i - x_p)).
+  bool affine = false;
 };
 } // namespace vulnus::mpm

@@ -68,7 +68,7 @@ TEST(PointDriver, DrivesTissueThroughFailureAlongTheFiber)
     EXPECT_EQ(row.failure, expected) << "stretch " << row.fiber_stretch;
     if (row.failure == 3)
     {
-      EXPECT_EQ(row.cauchy_stress.norm(), 0.0);
+      EXPECT_LT(row.cauchy_stress.norm(), 1e-6); // Pa: only the debris pressure of J = 1 - 1e-16
     }
   }
   EXPECT_GT(rows[50].cauchy_stress(2, 2), 0.0); // tension along the fiber before failure

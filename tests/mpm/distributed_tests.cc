@@ -37,7 +37,7 @@ mpm::SceneParameters crossing_spheres(const bool contact, const bool plastic_a =
   scene.bodies.push_back(test::sphere_body("b", "gel", Vector3(5e-3, 0.5e-3, 0), 3e-3, 1000.0, 2));
   scene.bodies[0].initial_velocity = Vector3(20, 0, 0);
   scene.bodies[1].initial_velocity = Vector3(-20, 1, 0);
-  scene.contact.enabled = contact;
+  scene.contact.ignore_other_bodies = !contact;
   scene.sort_interval = 7; // slabs are re-cut every 7 steps
   return scene;
 }

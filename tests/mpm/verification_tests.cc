@@ -213,13 +213,9 @@ TEST(MpmVerification, MatrixFailureFlagsWhereTheShearStrainPassedTheLimit)
     const double shear = 0.5 * (e.maxCoeff() - e.minCoeff()); // E1 - E3 of Green-Lagrange
     const bool failed = pts.failure[p] & 1;
     n_failed += failed;
-    // Stretching only grows: a failed point passed the limit (and stays past it up to the
-    // unloading of its own stress), an intact point never reached it.
-    if (failed)
-    {
-      EXPECT_GT(shear, 0.45) << "point " << p;
-    }
-    else
+    // Stretching only grows: an intact point never reached the limit. (A failed point of
+    // this isotropic law is debris, which keeps only its volume: F = J^(1/3) I.)
+    if (!failed)
     {
       EXPECT_LE(shear, 0.5 + 1e-9) << "point " << p;
     }
@@ -273,7 +269,7 @@ TEST(MpmVerification, ResultsDoNotDependOnTheThreadCount)
 {
   // Without contact the only difference is the order of the scatter sums: round-off.
   mpm::SceneParameters apart = two_spheres(0.5e-3);
-  apart.contact.enabled = false;
+  apart.contact.ignore_other_bodies = true;
   EXPECT_LT(largest_difference(apart, 60), 1e-12); // 1e-9 of a cell
   // Contact decisions (approaching or not) are discontinuous in the velocities, so round-off
   // can flip one at a node where the bodies barely touch; bound: 1e-3 of a cell.
