@@ -68,18 +68,20 @@ void log_scene(const mpm::Solver& solver, RunDirectory& directory)
         mpm::find_material(scene, body.material)->parameters.tissue.failure.enabled;
       line << (m.uses_fibers() ? "" : ", no fiber work")
            << (failure_on
-                 ? ", totally failed points skip the stress update"
+                 ? ", failed tissue keeps its pressure in compression"
                  : ", failure off: no eigenvalues");
     }
     directory.log(line.str());
   }
   std::ostringstream contact;
   contact << "  contact: ";
-  if (solver.uses_contact())
+  if (solver.uses_contact() && scene.contact.enabled)
     contact << "multi-velocity field at nodes shared by bodies, friction "
             << scene.contact.friction_coefficient;
+  else if (solver.uses_contact())
+    contact << "disabled: the bodies share one velocity field (no-slip)";
   else
-    contact << "none (one body or disabled): no contact pass";
+    contact << "none (one body): no contact pass";
   directory.log(contact.str());
 }
 void log_checkpoint_policy(const OutputParameters& output, RunDirectory& directory)

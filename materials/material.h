@@ -63,8 +63,9 @@ struct PointResponse
   Tensor2 cauchy_stress = Tensor2::Zero();
   /// Stored energy per unit reference volume of the parts that have not failed (J/m^3).
   double energy_density = 0.0;
-  /// Dilatational (P-wave) modulus of the current state in Pa, real and positive, so that
-  /// the wave speed is sqrt(modulus / current density). Zero for a rigid body.
+  /// Dilatational (P-wave) modulus of the current state in Pa, real and non-negative, so that
+  /// the wave speed is sqrt(modulus / current density). Zero for a rigid body and for failed
+  /// material that carries no wave (debris in tension).
   double p_wave_modulus = 0.0;
   /// Energy per unit reference volume dissipated in this update: plastic work, and the
   /// stored energy of a phase released at the moment it fails (J/m^3).

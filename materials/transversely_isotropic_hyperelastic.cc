@@ -316,9 +316,10 @@ void check_tissue(const MaterialParameters& parameters, const bool with_fibers,
 const std::string common_documentation =
     " W = c1 (I1~ - 3) + c2 (I2~ - 3) + K/2 (ln J)^2 [+ F2(lambda~)]; entries c1, c2 (Pa), "
     "Bulk modulus (Pa); two-surface failure (paper eqs. 5-6): Matrix shear limit (default 0.5, "
-    "measure E1-E3, (E1-E3)/2 or ln(l1/l3)) zeroes matrix and volumetric stress, Fiber stretch "
-    "limit (default 1.4, total stretch |F a0|) zeroes fiber stress; flags 0 intact, 1 matrix, "
-    "2 fibers, 3 total.";
+    "measure E1-E3, (E1-E3)/2 or ln(l1/l3)) zeroes matrix stress and tension pressure (failed "
+    "tissue keeps its pressure in compression; the fibers of a failed matrix carry f a (x) a on "
+    "the total stretch), Fiber stretch limit (default 1.4, total stretch |F a0|) zeroes fiber "
+    "stress; flags 0 intact, 1 matrix, 2 fibers, 3 total.";
 
 const bool transversely_isotropic_registered = register_material_model(
     "transversely isotropic hyperelastic",

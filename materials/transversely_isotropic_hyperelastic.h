@@ -11,7 +11,8 @@
 namespace vulnus::materials
 {
 /// Stress and energy of each part of the tissue law at one state: Cauchy stresses (Pa) and
-/// energies per unit reference volume (J/m^3). Parts whose phase has failed are zero.
+/// energies per unit reference volume (J/m^3), as the failure flags leave them (a failed
+/// matrix keeps pressure in compression and gives its fibers the total stretch).
 struct TissueStressParts
 {
   Tensor2 volumetric = Tensor2::Zero();
@@ -20,7 +21,8 @@ struct TissueStressParts
   double volumetric_energy = 0.0;
   double matrix_energy = 0.0;
   double fiber_energy = 0.0;
-  /// Deviatoric fiber stretch lambda~ = sqrt(a0 . C~ a0).
+  /// Fiber stretch the fiber stress uses: deviatoric lambda~ = sqrt(a0 . C~ a0) while the
+  /// matrix is intact, total |F a0| once it has failed.
   double fiber_stretch = 1.0;
   /// Kinematic by-products reused for the wave modulus.
   double J = 1.0;

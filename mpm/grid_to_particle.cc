@@ -11,10 +11,10 @@ namespace vulnus::mpm
 {
 namespace
 {
-/// Velocity update of the points of one share of one deformable body; with Project, each
-/// point's new momentum goes back to the nodes it read from, with the same weights (APIC: the
-/// affine momentum m (v + C (x_i - x_p))).
-template <ShapeFunction shape, bool project, bool affine>
+/// Velocity update of the points of one share of one deformable body: the FLIP/PIC blend
+/// v = a (v_p + sum w (v_i^(n+1) - v_i^n)) + (1 - a) sum w v_i^(n+1). With Project (MUSL),
+/// each point's new momentum goes back to the nodes it read from, with the same weights.
+template <ShapeFunction shape, bool project>
 void update_share_velocities(const Grid& grid, const double lp, const double flip,
                              const std::size_t b, const ShareRange range, const GridFields& fields,
                              Particles& particles, Vector3* momentum, Vector3* contested)
@@ -25,28 +25,20 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
   {
     Vector3 v_pic = Vector3::Zero();
     Vector3 dv = Vector3::Zero();
-    Tensor2 C = Tensor2::Zero();
     std::array<std::int32_t, n * n * n> slots;
     std::array<double, n * n * n> weights;
-    std::array<Vector3, affine ? n * n * n : 1> offsets;
     int n_nodes = 0;
     for_each_node<shape>(grid, lp, particles.position[p],
-                         [&](const std::int64_t key, const double w, const Vector3& grad_w,
-                             const Vector3& offset)
+                         [&](const std::int64_t key, const double w, const Vector3&)
                          {
                            const std::int32_t slot = grid.slot(key);
                            const std::size_t e = slot * n_bodies + b;
                            v_pic += w * fields.velocity_new[e];
                            dv += w * (fields.velocity_new[e] - fields.velocity[e]);
-                           if constexpr (affine)
-                             C.noalias() += fields.velocity_new[e] * grad_w.transpose();
                            if constexpr (project)
                            {
                              slots[n_nodes] = slot;
-                             weights[n_nodes] = w;
-                             if constexpr (affine)
-                               offsets[n_nodes] = offset;
-                             ++n_nodes;
+                             weights[n_nodes++] = w;
                            }
                          });
     const Vector3 v_flip = particles.velocity[p] + dv;
@@ -57,21 +49,11 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
                                        (v_flip.squaredNorm() - v.squaredNorm()) /
                                        particles.reference_volume[p];
     particles.velocity[p] = v;
-    if constexpr (affine)
-      particles.affine_velocity[p] = C.cast<float>();
     if constexpr (project)
     {
-      const double m = particles.mass[p];
-      const Vector3 mv = m * v;
-      const Tensor2 mC = m * C;
+      const Vector3 mv = particles.mass[p] * v;
       for (int i = 0; i < n_nodes; ++i)
-      {
-        Vector3& target = scatter_target(grid, slots[i], n_bodies, b, momentum, contested);
-        if constexpr (affine)
-          target += weights[i] * (mv + mC * offsets[i]);
-        else
-          target += weights[i] * mv;
-      }
+        scatter_target(grid, slots[i], n_bodies, b, momentum, contested) += weights[i] * mv;
     }
   }
 }
@@ -93,23 +75,14 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
           if (s.body_is_rigid[b])
             for (long p = range.begin; p < range.end; ++p)
               particles.velocity[p] = s.rigid_velocity[b];
+          else if (momentum)
+            update_share_velocities<shape, true>(grid, transfer.half_size_cells[b],
+                                                 s.flip_fraction, b, range, fields, particles,
+                                                 momentum, contested);
           else
-          {
-            const double lp = transfer.half_size_cells[b];
-            const bool project = momentum != nullptr;
-            if (project && s.affine)
-              update_share_velocities<shape, true, true>(grid, lp, s.flip_fraction, b, range,
-                                                         fields, particles, momentum, contested);
-            else if (project)
-              update_share_velocities<shape, true, false>(grid, lp, s.flip_fraction, b, range,
-                                                          fields, particles, momentum, contested);
-            else if (s.affine)
-              update_share_velocities<shape, false, true>(grid, lp, s.flip_fraction, b, range,
-                                                          fields, particles, nullptr, nullptr);
-            else
-              update_share_velocities<shape, false, false>(grid, lp, s.flip_fraction, b, range,
-                                                           fields, particles, nullptr, nullptr);
-          }
+            update_share_velocities<shape, false>(grid, transfer.half_size_cells[b],
+                                                  s.flip_fraction, b, range, fields, particles,
+                                                  nullptr, nullptr);
         };
         if (projection)
         {
@@ -133,6 +106,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
   const std::size_t n_bodies = particles.n_bodies();
   const double dt = s.time_step;
   const bool midpoint = s.deformation_update == DeformationUpdate::midpoint;
+  const bool affine = s.affine;
   with_shape(transfer.shape,
              [&](auto shape_constant)
              {
@@ -171,6 +145,11 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                          v += w * velocity_new[e];
                        });
                    particles.position[p] += dt * v;
+                   // APIC's affine velocity is this L: for MUSL from the re-projected
+                   // velocities, mass-weighted means of point velocities, so a light node's
+                   // v + dt f / m never reaches the scatter through it.
+                   if (affine)
+                     particles.affine_velocity[p] = L.cast<float>();
                    Tensor2& F = particles.deformation_gradient[p];
                    const double J_old = volumetric_rate ? F.determinant() : 0.0;
                    if (particles.failure[p] == materials::total_failure)

@@ -18,8 +18,8 @@ struct KinematicsSettings
 {
   double time_step = 0.0;
   double flip_fraction = 1.0; ///< 1: pure FLIP (velocity increments), 0: pure PIC
-  /// APIC: also store C_p = sum v_i (x) grad w at each point (the scatter's affine part);
-  /// with flip_fraction > 0 the velocity is the FLIP-APIC blend.
+  /// APIC: the deformation pass stores its velocity gradient L as C_p, the affine part of
+  /// the next scatter; with flip_fraction > 0 the velocity is the FLIP-APIC blend.
   bool affine = false;
   DeformationUpdate deformation_update = DeformationUpdate::midpoint;
   std::vector<char> body_is_rigid;

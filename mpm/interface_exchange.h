@@ -2,7 +2,8 @@
 // (DESIGN.md section 6): after the grid update the MPM solver reports its own mass, momentum
 // and force at the shared nodes; the partner returns the node's velocity at the start and at
 // the end of the step. A shared node carries its own velocity (like an FE node): the points
-// receive the increment v_end - v_start (FLIP) or v_end (PIC) and move with v_end.
+// receive the increment v_end - v_start (FLIP; a coupled solver always uses FLIP, since the
+// exchange books exactly that impulse) and move with v_end.
 #pragma once
 
 #include <Eigen/Core>

@@ -54,11 +54,6 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   contact_active = n_bodies > 1 && !scene.contact.ignore_other_bodies;
   const bool affine = scene.velocity_transfer == VelocityTransfer::apic ||
                       scene.velocity_transfer == VelocityTransfer::relaxed_apic;
-  if (affine && contact_active)
-    throw std::invalid_argument(
-        "Grid/Velocity transfer: APIC is unstable where bodies meet (the affine part "
-        "extrapolates the velocities of light contact nodes and inverts points); use relaxed "
-        "PIC in scenes of several bodies");
   const double friction = scene.contact.enabled ? scene.contact.friction_coefficient : -1.0;
   transfer.contact_normals = contact_active && friction >= 0.0;
 

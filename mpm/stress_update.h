@@ -1,6 +1,6 @@
 // Stress-update stage: every deformable body's material updates its points in blocks (one
-// virtual call per block of contiguous intact or partly failed points; totally failed points
-// and rigid bodies are skipped), then the optional artificial bulk viscosity is added.
+// virtual call per block; rigid bodies are skipped, failed points keep whatever their law
+// leaves them), then the optional artificial bulk viscosity is added.
 #pragma once
 
 #include "materials/material.h"

@@ -104,16 +104,7 @@ TEST(MpmContact, CoulombFrictionSlowsTheSlide)
 
 TEST(MpmContact, FreeRigidProjectileIsSlowedByTheTarget)
 {
-  mpm::SceneParameters scene = test::empty_scene(Vector3(-8e-3, -8e-3, -8e-3), Vector3(8e-3, 20e-3, 8e-3), 1e-3);
-  scene.materials.push_back(test::elastic_material("gel", 2e5, 2.1e3));
-  scene.materials.push_back(test::rigid_material("steel"));
-  scene.bodies.push_back(test::box_body("slab", "gel", Vector3(-8e-3, 0, -8e-3), Vector3(8e-3, 4e-3, 8e-3), 1060.0, 2));
-  mpm::BodyParameters ball = test::sphere_body("ball", "steel", Vector3(0, -3e-3, 0), 2.5e-3, 8930.0, 2);
-  ball.initial_velocity = Vector3(0, 50, 0);
-  ball.is_projectile = true;
-  scene.bodies.push_back(ball);
-  scene.end_time = 0.12e-3;
-  mpm::Solver solver(scene);
+  mpm::Solver solver(test::rigid_ball_into_gel_slab());
   const mpm::SceneDiagnostics start = solver.diagnostics();
   while (!solver.finished())
     solver.advance();

@@ -55,6 +55,20 @@ mpm::BodyParameters sphere_body(const std::string& name, const std::string& mate
   return b;
 }
 
+mpm::SceneParameters rigid_ball_into_gel_slab()
+{
+  mpm::SceneParameters scene = empty_scene(mpm::Vector3(-8e-3, -8e-3, -8e-3), mpm::Vector3(8e-3, 20e-3, 8e-3), 1e-3);
+  scene.materials.push_back(elastic_material("gel", 2e5, 2.1e3));
+  scene.materials.push_back(rigid_material("steel"));
+  scene.bodies.push_back(box_body("slab", "gel", mpm::Vector3(-8e-3, 0, -8e-3), mpm::Vector3(8e-3, 4e-3, 8e-3), 1060.0, 2));
+  mpm::BodyParameters ball = sphere_body("ball", "steel", mpm::Vector3(0, -3e-3, 0), 2.5e-3, 8930.0, 2);
+  ball.initial_velocity = mpm::Vector3(0, 50, 0);
+  ball.is_projectile = true;
+  scene.bodies.push_back(ball);
+  scene.end_time = 0.12e-3;
+  return scene;
+}
+
 mpm::SceneParameters empty_scene(const mpm::Vector3& lower, const mpm::Vector3& upper,
                                  const double cell_size)
 {
