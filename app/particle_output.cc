@@ -174,7 +174,8 @@ void ParticleSnapshot::set_rows_per_chunk(const std::size_t rows)
 void ParticleSnapshot::add_field(Field field)
 {
   const std::string& name = field.name;
-  if (name.empty() || name == "positions" || name.find_first_of("/<>&\"") != std::string::npos)
+  if (name.empty() || name == "positions" || name == "connectivity" ||
+      name.find_first_of("/<>&\"") != std::string::npos)
     throw std::invalid_argument("particle field name '" + name +
                                 "' is empty, reserved or contains / < > & \"");
   for (const Field& existing : field_list)
@@ -202,7 +203,17 @@ void ParticleSnapshot::borrow_vector(const std::string& name, const float* value
 
 void ParticleSnapshot::borrow_symmetric_tensor(const std::string& name, const double* voigt)
 {
-  add_field({name, FieldKind::symmetric_tensor, voigt, Element::float64, {}});
+  // The file holds XDMF's Tensor6 order XX XY XZ YY YZ ZZ (readers expand it by that order);
+  // the points store xx yy zz xy yz xz.
+  compute(name, FieldKind::symmetric_tensor,
+          [voigt](const std::size_t first, const std::size_t count, void* out)
+          {
+            constexpr int voigt_of_xdmf[6] = {0, 3, 5, 1, 4, 2};
+            auto* values = static_cast<double*>(out);
+            for (std::size_t i = 0; i < count; ++i)
+              for (int c = 0; c < 6; ++c)
+                values[6 * i + c] = voigt[6 * (first + i) + voigt_of_xdmf[c]];
+          });
 }
 
 void ParticleSnapshot::borrow_integer(const std::string& name, const std::uint8_t* values)
@@ -262,6 +273,16 @@ void write_particle_hdf5(const std::string& path, const double time,
                                     [](std::size_t, std::size_t count, void* out)
                                     { std::fill_n(static_cast<double*>(out), 3 * count, 0.0); }};
   write_field(file, positions, rows, chunk_rows, n_chunks);
+  // Polyvertex connectivity 0..N-1 over all ranks: the Xdmf3 readers build no cells without it.
+  ParticleSnapshot::Field connectivity{"connectivity", ParticleSnapshot::FieldKind::integer,
+                                       nullptr, ParticleSnapshot::Element::float64,
+                                       [&rows](std::size_t first, std::size_t count, void* out)
+                                       {
+                                         auto* index = static_cast<std::int32_t*>(out);
+                                         for (std::size_t i = 0; i < count; ++i)
+                                           index[i] = static_cast<std::int32_t>(rows.first + first + i);
+                                       }};
+  write_field(file, connectivity, rows, chunk_rows, n_chunks);
   for (const ParticleSnapshot::Field& field : snapshot.fields())
     write_field(file, field, rows, chunk_rows, n_chunks);
   check(H5Fflush(file, H5F_SCOPE_LOCAL), "flush '" + path + "'");
@@ -394,7 +415,9 @@ void ParticleOutput::write_xdmf() const
           out << "      <Grid Name=\"" << record.file_name << "\" GridType=\"Uniform\">\n"
               << "        <Time Value=\"" << record.time << "\"/>\n"
               << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
-              << "\" NodesPerElement=\"1\"/>\n"
+              << "\" NodesPerElement=\"1\">\n"
+              << "          " << data_item(record.file_name, "connectivity", n, 1, true) << "\n"
+              << "        </Topology>\n"
               << "        <Geometry GeometryType=\"XYZ\">\n"
               << "          " << data_item(record.file_name, "positions", n, 3, false) << "\n"
               << "        </Geometry>\n";
