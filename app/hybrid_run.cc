@@ -147,7 +147,8 @@ int run_hybrid_scene(const RunParameters& parameters, RunDirectory& directory)
   if (totals.completed)
   {
     add_history_row();
-    write_outputs();
+    if (!output.has_output_at(solver.time()))
+      write_outputs();
   }
   if (history)
     history->flush();

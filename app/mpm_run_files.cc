@@ -106,7 +106,8 @@ void MpmRunFiles::after_step(const mpm::Solver& solver)
 void MpmRunFiles::finish(const mpm::Solver& solver)
 {
   add_history_row(solver);
-  output.write(solver.time(), mpm_snapshot(solver));
+  if (!output.has_output_at(solver.time()))
+    output.write(solver.time(), mpm_snapshot(solver));
   if (history)
     history->flush();
 }

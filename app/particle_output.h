@@ -100,6 +100,12 @@ public:
   std::string write(double time, const ParticleSnapshot& snapshot);
 
   unsigned int n_outputs() const { return static_cast<unsigned int>(records.size()); }
+  /// True when the newest output was written at `time` (a final output would repeat it, and
+  /// ParaView shows an empty frame for two grids at one time).
+  bool has_output_at(const double time) const
+  {
+    return !records.empty() && records.back().time == time;
+  }
 
   /// The list of outputs written so far (times, files, fields), for a checkpoint; restore
   /// continues the series after them (files written later by the interrupted run are
