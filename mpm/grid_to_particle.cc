@@ -45,9 +45,10 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
     const Vector3 v = flip * v_flip + (1.0 - flip) * v_pic;
     // Kinetic energy the blend takes from the FLIP velocity (PIC's damping), booked as
     // dissipated so the energy balance closes.
-    particles.dissipated_density[p] += 0.5 * particles.mass[p] *
-                                       (v_flip.squaredNorm() - v.squaredNorm()) /
-                                       particles.reference_volume[p];
+    if (flip < 1.0)
+      particles.dissipated_density[p] += 0.5 * particles.mass[p] *
+                                         (v_flip.squaredNorm() - v.squaredNorm()) /
+                                         particles.reference_volume[p];
     particles.velocity[p] = v;
     if constexpr (project)
     {

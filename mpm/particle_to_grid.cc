@@ -63,21 +63,26 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
     const Tensor2 volume_stress =
         (particles.reference_volume[p] * particles.deformation_gradient[p].determinant()) *
         full_tensor(particles.stress[p]);
-    for_each_node<shape>(grid, lp, particles.position[p],
-                         [&](const std::int64_t key, const double w, const Vector3& grad_w,
-                             const Vector3& offset)
-                         {
-                           NodeBodyData& node =
-                               scatter_target(grid, grid.slot(key), n_bodies, b, fields, contested);
-                           node.mass += w * m;
-                           if constexpr (affine)
-                             node.momentum += w * (mv + mC * offset);
-                           else
-                             node.momentum += w * mv;
-                           node.force -= volume_stress * grad_w;
-                           if constexpr (with_normals)
-                             node.mass_gradient += m * grad_w;
-                         });
+    auto add = [&](const std::int64_t key, const double w, const Vector3& grad_w,
+                   const Vector3& momentum)
+    {
+      NodeBodyData& node = scatter_target(grid, grid.slot(key), n_bodies, b, fields, contested);
+      node.mass += w * m;
+      node.momentum += w * momentum;
+      node.force -= volume_stress * grad_w;
+      if constexpr (with_normals)
+        node.mass_gradient += m * grad_w;
+    };
+    // The node offset is computed only for APIC's affine momentum.
+    if constexpr (affine)
+      for_each_node<shape>(grid, lp, particles.position[p],
+                           [&](const std::int64_t key, const double w, const Vector3& grad_w,
+                               const Vector3& offset)
+                           { add(key, w, grad_w, (mv + mC * offset).eval()); });
+    else
+      for_each_node<shape>(grid, lp, particles.position[p],
+                           [&](const std::int64_t key, const double w, const Vector3& grad_w)
+                           { add(key, w, grad_w, mv); });
   }
 }
 } // namespace
