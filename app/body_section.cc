@@ -1,6 +1,6 @@
 // Deck subsections `Body <name>`: geometry, material, density, initial velocity, particle
 // density, rigid motion and fiber field of each body. Bodies named `slab` and `bullet`
-// default to the paper's reference scene (DESIGN.md section 2).
+// default to the paper's reference scene (docs/DESIGN.md section 2).
 #include "app/deck_sections.h"
 
 namespace vulnus::app

@@ -1,5 +1,5 @@
 // Deck section `Hybrid`: the MPM zone around the tract, the body it splits and the coupling
-// scheme (DESIGN.md section 6). A hybrid deck differs from its pure-MPM reference only here.
+// scheme (docs/DESIGN.md section 6). A hybrid deck differs from its pure-MPM reference only here.
 #include "app/deck_sections.h"
 
 namespace vulnus::app

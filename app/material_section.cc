@@ -1,6 +1,6 @@
 // Deck subsections `Material <name>`: the model (a name from the material registry) and one
 // subsection per model family with its parameters. Materials named `tissue` and `bullet`
-// default to the paper's values (DESIGN.md section 2).
+// default to the paper's values (docs/DESIGN.md section 2).
 #include "app/deck_checks.h"
 #include "app/deck_sections.h"
 

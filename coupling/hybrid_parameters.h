@@ -1,4 +1,4 @@
-// Deck-level description of a hybrid MPM-FE scene (DESIGN.md section 6): the MPM zone around
+// Deck-level description of a hybrid MPM-FE scene (docs/DESIGN.md section 6): the MPM zone around
 // the tract, which body it splits, and the coupling scheme. SI units.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The hybrid MPM-FE time loop (DESIGN.md section 6): the MPM solver of the zone and the
+// The hybrid MPM-FE time loop (docs/DESIGN.md section 6): the MPM solver of the zone and the
 // deal.II far field, coupled through interface nodes that coincide with MPM grid nodes.
 //   same step:  one dt = min(MPM stable step, FE stable step); every shared node keeps one
 //               velocity (the FE interface velocity), accelerated by the summed MPM and FE

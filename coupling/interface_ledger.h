@@ -1,5 +1,5 @@
 // Running account of what crosses the MPM-FE interface: work done by each side on it and the
-// momentum each side received (DESIGN.md section 6, the interface energy error).
+// momentum each side received (docs/DESIGN.md section 6, the interface energy error).
 #pragma once
 
 #include <Eigen/Core>

@@ -65,7 +65,7 @@ struct ImplicitStepStatistics
   double final_residual = 0.0;        ///< N
 };
 
-/// Finite element far field of the slab (DESIGN.md section 5).
+/// Finite element far field of the slab (docs/DESIGN.md section 5).
 ///
 /// Total Lagrangian: f_int = int_Omega0 P : grad N dV with P = J sigma F^{-T} from
 /// materials::Material::update at every quadrature point; per-point history (failure flags,

@@ -1,4 +1,4 @@
-// Plain parameter structs of the finite element far field (DESIGN.md section 5): mesh of the
+// Plain parameter structs of the finite element far field (docs/DESIGN.md section 5): mesh of the
 // slab minus the MPM zone, element, time integrator, Newton and Krylov settings, face
 // conditions, material and output. Filled by the deck reader (app/) or by tests. SI units.
 #pragma once

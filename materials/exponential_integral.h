@@ -1,5 +1,5 @@
 // The exponential integral Ei(x) for x > 0, needed for the exact strain energy of the
-// exponential toe region of the Weiss fiber law (DESIGN.md section 3).
+// exponential toe region of the Weiss fiber law (docs/DESIGN.md section 3).
 #pragma once
 
 namespace vulnus::materials

@@ -1,5 +1,5 @@
 // Plain parameter structs of the material models, filled by the deck reader (app/) or by
-// tests; the defaults are the paper's values (DESIGN.md sections 2-3). SI units.
+// tests; the defaults are the paper's values (docs/DESIGN.md sections 2-3). SI units.
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
 // Rigid material: a body that moves with prescribed or contact-driven rigid motion; no stress
-// update and no time-step limit (DESIGN.md section 3, bullet option).
+// update and no time-step limit (docs/DESIGN.md section 3, bullet option).
 #pragma once
 
 #include "materials/material.h"

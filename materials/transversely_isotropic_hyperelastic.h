@@ -1,5 +1,5 @@
 // The failing transversely isotropic hyperelastic tissue law (Weiss 1996, uncoupled) and its
-// isotropic variant, shared by MPM particles and FE quadrature points (DESIGN.md section 3).
+// isotropic variant, shared by MPM particles and FE quadrature points (docs/DESIGN.md section 3).
 #pragma once
 
 #include "materials/material.h"

@@ -7,7 +7,7 @@
 
 namespace vulnus::materials
 {
-/// Fiber law of Weiss, Maker and Govindjee (1996), eq. for F2 (DESIGN.md section 3):
+/// Fiber law of Weiss, Maker and Govindjee (1996), eq. for F2 (docs/DESIGN.md section 3):
 ///
 ///   f(lambda) = lambda dF2/dlambda = 0                              lambda < 1
 ///                                  = c3 (exp(c4 (lambda - 1)) - 1)  1 <= lambda < lambda*

@@ -1,5 +1,5 @@
 // Hook through which a partner solver (the FE far field) shares grid nodes with the MPM step
-// (DESIGN.md section 6): after the grid update the MPM solver reports its own mass, momentum
+// (docs/DESIGN.md section 6): after the grid update the MPM solver reports its own mass, momentum
 // and force at the shared nodes; the partner returns the node's velocity at the start and at
 // the end of the step. A shared node carries its own velocity (like an FE node): the points
 // receive the increment v_end - v_start (FLIP; a coupled solver always uses FLIP, since the

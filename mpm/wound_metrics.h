@@ -1,4 +1,4 @@
-// Wound metrics of a failed point set (DESIGN.md section 8), computed on the reference
+// Wound metrics of a failed point set (docs/DESIGN.md section 8), computed on the reference
 // (initial) positions of the target's points, so they map which material was destroyed:
 //  - failed volume by type (flags 1 matrix, 2 fibers, 3 total);
 //  - the wound of a face: the totally failed points within one cell of the face plane;

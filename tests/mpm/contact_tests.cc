@@ -15,15 +15,11 @@ TEST(MpmContact, CollisionConservesMomentumWithoutInterpenetration)
 {
   for (const double friction : {0.0, 0.08, -1.0})
   {
-    mpm::SceneParameters scene = test::empty_scene(Vector3(-12e-3, -6e-3, -6e-3), Vector3(12e-3, 6e-3, 6e-3), 1e-3);
-    scene.contact.friction_coefficient = friction;
-    scene.materials.push_back(test::elastic_material("gel", 1e5, 1e4));
-    scene.bodies.push_back(test::sphere_body("left", "gel", Vector3(-4e-3, 0, 0), 3e-3, 1000.0, 2));
-    scene.bodies.push_back(test::sphere_body("right", "gel", Vector3(4e-3, 0, 0), 3e-3, 2000.0, 2));
     // Relative speed 1.5 m/s, about 1/7 of the wave speed: small deformation, so the contact
     // surface stays near a plane normal to x.
-    scene.bodies[0].initial_velocity = Vector3(1.0, 0.2, 0);
-    scene.bodies[1].initial_velocity = Vector3(-0.5, 0, 0.0);
+    mpm::SceneParameters scene =
+        test::two_gel_spheres(1000.0, 2000.0, Vector3(1.0, 0.2, 0), Vector3(-0.5, 0, 0.0));
+    scene.contact.friction_coefficient = friction;
     mpm::Solver solver(scene);
     const mpm::SceneDiagnostics start = solver.diagnostics();
     const double scale = start.bodies[0].mass * 1.0;

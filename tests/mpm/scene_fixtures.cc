@@ -55,6 +55,19 @@ mpm::BodyParameters sphere_body(const std::string& name, const std::string& mate
   return b;
 }
 
+mpm::SceneParameters two_gel_spheres(const double density_left, const double density_right,
+                                     const mpm::Vector3& velocity_left,
+                                     const mpm::Vector3& velocity_right)
+{
+  mpm::SceneParameters scene = empty_scene(mpm::Vector3(-12e-3, -6e-3, -6e-3), mpm::Vector3(12e-3, 6e-3, 6e-3), 1e-3);
+  scene.materials.push_back(elastic_material("gel", 1e5, 1e4));
+  scene.bodies.push_back(sphere_body("left", "gel", mpm::Vector3(-4e-3, 0, 0), 3e-3, density_left, 2));
+  scene.bodies.push_back(sphere_body("right", "gel", mpm::Vector3(4e-3, 0, 0), 3e-3, density_right, 2));
+  scene.bodies[0].initial_velocity = velocity_left;
+  scene.bodies[1].initial_velocity = velocity_right;
+  return scene;
+}
+
 mpm::SceneParameters rigid_ball_into_gel_slab()
 {
   mpm::SceneParameters scene = empty_scene(mpm::Vector3(-8e-3, -8e-3, -8e-3), mpm::Vector3(8e-3, 20e-3, 8e-3), 1e-3);

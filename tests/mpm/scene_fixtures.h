@@ -21,6 +21,12 @@ mpm::BodyParameters sphere_body(const std::string& name, const std::string& mate
                                 const mpm::Vector3& center, double radius, double density,
                                 unsigned int particles_per_cell);
 
+/// Two gel spheres (radius 3 mm, K = 1e5 Pa, c1 = 1e4 Pa) 8 mm apart along x in a 24 x 12 x
+/// 12 mm domain, with their densities and initial velocities.
+mpm::SceneParameters two_gel_spheres(double density_left, double density_right,
+                                     const mpm::Vector3& velocity_left,
+                                     const mpm::Vector3& velocity_right);
+
 /// A free rigid steel ball (radius 2.5 mm, 50 m/s along y, the projectile) about to hit a
 /// 4 mm gel slab; all faces free, end time 0.12 ms.
 mpm::SceneParameters rigid_ball_into_gel_slab();

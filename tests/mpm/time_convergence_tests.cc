@@ -18,14 +18,10 @@ namespace
 /// (separation over approach speed along x) and the largest relative loss of total energy.
 std::pair<double, double> collide_spheres(const double cfl)
 {
-  mpm::SceneParameters scene = test::empty_scene(Vector3(-12e-3, -6e-3, -6e-3), Vector3(12e-3, 6e-3, 6e-3), 1e-3);
+  mpm::SceneParameters scene =
+      test::two_gel_spheres(1000.0, 1000.0, Vector3(1.0, 0, 0), Vector3(-1.0, 0, 0));
   scene.cfl = cfl;
   scene.contact.friction_coefficient = 0.0;
-  scene.materials.push_back(test::elastic_material("gel", 1e5, 1e4));
-  scene.bodies.push_back(test::sphere_body("left", "gel", Vector3(-4e-3, 0, 0), 3e-3, 1000.0, 2));
-  scene.bodies.push_back(test::sphere_body("right", "gel", Vector3(4e-3, 0, 0), 3e-3, 1000.0, 2));
-  scene.bodies[0].initial_velocity = Vector3(1.0, 0, 0);
-  scene.bodies[1].initial_velocity = Vector3(-1.0, 0, 0);
   mpm::Solver solver(scene);
   const double energy_start = solver.initial_energy();
   double worst_loss = 0.0;
