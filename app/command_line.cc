@@ -1,7 +1,7 @@
 // Parsing the command line of `vulnus`.
 #include "app/command_line.h"
 
-#include "app/version.h"
+#include "deck/version.h"
 
 namespace vulnus::app
 {
@@ -65,7 +65,7 @@ private:
 
 void read_options(OptionReader& reader, CommandLine& line, const bool run)
 {
-  std::vector<DeckOverride> sets, output, threads, restart;
+  std::vector<deck::DeckOverride> sets, output, threads, restart;
   while (!reader.done())
   {
     const std::string argument = reader.take();

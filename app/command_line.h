@@ -2,7 +2,7 @@
 // usage text. No deal.II here.
 #pragma once
 
-#include "app/deck_reader.h"
+#include "deck/deck_reader.h"
 
 #include <stdexcept>
 #include <string>
@@ -35,7 +35,7 @@ struct CommandLine
   std::string output_file; ///< print_parameters: FILE ("" = stdout)
   /// --set overrides, then --output and --threads as overrides of Output/Directory and
   /// Run/Threads, in that order.
-  std::vector<DeckOverride> overrides;
+  std::vector<deck::DeckOverride> overrides;
   std::vector<std::string> arguments; ///< point: everything after it; compare: the two runs
   /// run --restart RUN_DIR: continue from the newest complete checkpoint there ("" = fresh run).
   std::string restart_directory;

@@ -1,19 +1,30 @@
 // The subcommands of `vulnus`: run, check, --print-parameters.
 #include "app/commands.h"
 
-#include "app/mpi_launch.h"
+#include "io/mpi_launch.h"
 
-#include "app/atomic_file.h"
-#include "app/deck_reader.h"
-#include "app/run_directory.h"
-#include "app/simulation_runner.h"
-#include "app/version.h"
+#include "io/atomic_file.h"
+#include "deck/deck_reader.h"
+#include "io/run_directory.h"
+#include "simulator/simulation_runner.h"
+#include "deck/version.h"
 
 #include <exception>
 #include <iostream>
 
 namespace vulnus::app
 {
+using deck::DeckError;
+using deck::RunParameters;
+using deck::read_run_parameters;
+using io::RunDirectory;
+using io::launcher_rank;
+using simulator::run_simulation;
+using deck::Method;
+using deck::DeckOverride;
+using io::default_run_directory;
+using io::write_file_atomically;
+
 namespace
 {
 void report(const DeckError& error)

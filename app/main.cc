@@ -2,7 +2,7 @@
 // subcommands (app/commands.h). Exit status 0 success, 1 run failure, 2 bad usage or deck.
 #include "app/command_line.h"
 #include "app/commands.h"
-#include "app/compare_runs.h"
+#include "analysis/compare_runs.h"
 #include "app/point_command.h"
 
 #include <exception>
@@ -25,7 +25,7 @@ int main(int argc, char** argv)
     case CommandLine::Command::point:
       return point_command(line.arguments);
     case CommandLine::Command::compare:
-      return compare_runs(line.arguments[0], line.arguments[1], std::cout, std::cerr);
+      return vulnus::analysis::compare_runs(line.arguments[0], line.arguments[1], std::cout, std::cerr);
     case CommandLine::Command::help:
       std::cout << usage_text();
       return 0;

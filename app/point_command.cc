@@ -1,7 +1,7 @@
 // The material-point driver command.
 #include "app/point_command.h"
 
-#include "app/deck_reader.h"
+#include "deck/deck_reader.h"
 #include "materials/material_registry.h"
 #include "materials/point_driver.h"
 
@@ -14,6 +14,10 @@
 
 namespace vulnus::app
 {
+using deck::DeckError;
+using deck::RunParameters;
+using deck::read_run_parameters;
+
 namespace
 {
 struct PointOptions

@@ -86,8 +86,6 @@ std::vector<std::string> check_parameters(const FeSceneParameters& p)
     messages.push_back("Density: must be positive (kg/m^3)");
   if (!(p.end_time >= 0.0))
     messages.push_back("End time: must not be negative");
-  if (!(p.output_interval >= 0.0))
-    messages.push_back("Output interval: must not be negative; 0 writes first and last state");
   for (unsigned int f = 0; f < n_slab_faces; ++f)
   {
     const FaceParameters& face = p.faces[f];

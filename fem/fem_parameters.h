@@ -139,9 +139,7 @@ struct FeSceneParameters
   double density = 1060.0; ///< kg/m^3, reference density
   materials::FiberFieldParameters fibers;
 
-  double end_time = 1.0e-3;        ///< s
-  double output_interval = 0.0;    ///< s; 0 writes only the first and last state
-  unsigned int log_interval = 100; ///< steps between progress lines of run_fe_scene
+  double end_time = 1.0e-3; ///< s
 };
 
 /// Problems with the parameters, each "<entry>: <problem>; <what to do>" (empty when fine).

@@ -1,8 +1,8 @@
 // One fuzz input through the deck reader, the checks, the scene builder and two steps.
 #include "fuzz/deck_exercise.h"
 
-#include "app/deck_reader.h"
-#include "app/scene_size.h"
+#include "deck/deck_reader.h"
+#include "deck/scene_size.h"
 #include "mpm/solver.h"
 
 namespace vulnus::fuzz
@@ -16,18 +16,18 @@ constexpr double max_box_nodes_built = 2.0e6;
 
 void exercise_deck(const std::string& deck_text)
 {
-  app::RunParameters parameters;
+  deck::RunParameters parameters;
   try
   {
-    parameters = app::read_run_parameters_from_text(deck_text, "fuzz.prm");
+    parameters = deck::read_run_parameters_from_text(deck_text, "fuzz.prm");
   }
-  catch (const app::DeckError&)
+  catch (const deck::DeckError&)
   {
     return;
   }
-  if (parameters.method != app::Method::mpm || parameters.hybrid.enabled)
+  if (parameters.method != deck::Method::mpm || parameters.hybrid.enabled)
     return;
-  const app::SceneSize size = app::estimate_scene_size(parameters.scene);
+  const deck::SceneSize size = deck::estimate_scene_size(parameters.scene);
   if (size.points > max_points_built || size.box_nodes > max_box_nodes_built)
     return;
   parameters.scene.n_threads = 1;

@@ -2,7 +2,7 @@
 // steps per second and seconds per phase, for 1 and 2 threads and linear and GIMP shape
 // functions, and resident memory per particle. All configurations in one run, so the ratios
 // compare like with like on a shared machine.
-#include "app/deck_reader.h"
+#include "deck/deck_reader.h"
 #include "mpm/solver.h"
 
 #include <omp.h>
@@ -279,12 +279,12 @@ int main(int argc, char** argv)
       return 2;
     }
   }
-  app::RunParameters parameters;
+  deck::RunParameters parameters;
   try
   {
-    parameters = app::read_run_parameters(deck);
+    parameters = deck::read_run_parameters(deck);
   }
-  catch (const app::DeckError& error)
+  catch (const deck::DeckError& error)
   {
     for (const std::string& message : error.messages())
       std::cerr << "throughput: " << message << '\n';

@@ -1,7 +1,7 @@
-// `vulnus compare` (app/compare_runs.h): a run against itself, against a perturbed copy
+// `vulnus compare` (analysis/compare_runs.h): a run against itself, against a perturbed copy
 // (summary differences, shared points matched by reference position, the 4 x 4 flag table),
 // and missing or unreadable inputs.
-#include "app/compare_runs.h"
+#include "analysis/compare_runs.h"
 
 #include "synthetic_run.h"
 
@@ -22,7 +22,7 @@ struct Result
 Result compare(const std::filesystem::path& a, const std::filesystem::path& b)
 {
   std::ostringstream out, err;
-  const int status = vulnus::app::compare_runs(a.string(), b.string(), out, err);
+  const int status = vulnus::analysis::compare_runs(a.string(), b.string(), out, err);
   return {status, out.str(), err.str()};
 }
 

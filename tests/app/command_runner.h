@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace vulnus::testing
 {
@@ -87,5 +88,33 @@ inline std::size_t n_entries(const std::filesystem::path& directory)
     if (entry.path().filename().string()[0] != '.')
       ++n;
   return n;
+}
+/// Starts `vulnus run ARGUMENTS` in `directory` without waiting; stdout and stderr go to
+/// LOG.out and LOG.err there.
+inline pid_t start_vulnus(const std::string& arguments, const std::filesystem::path& directory,
+                          const std::string& log)
+{
+  const std::string command = "exec '" + vulnus_binary() + "' run " + arguments + " >'" +
+                              (directory / (log + ".out")).string() + "' 2>'" +
+                              (directory / (log + ".err")).string() + "'";
+  const pid_t pid = fork();
+  if (pid == 0)
+  {
+    if (chdir(directory.c_str()) != 0)
+      _exit(127);
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  return pid;
+}
+
+/// Waits for a process of start_vulnus: its exit status (-1 when killed) and the signal
+/// that killed it (0 when it exited).
+inline int wait_for(const pid_t pid, int& signal)
+{
+  int status = 0;
+  waitpid(pid, &status, 0);
+  signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 } // namespace vulnus::testing

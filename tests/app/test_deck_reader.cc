@@ -1,14 +1,14 @@
 // Deck reader as a library: the default deck is the paper's reference scene, overrides and
 // deck lines land in the structs, errors are DeckError with located messages.
-#include "app/deck_reader.h"
-#include "app/line_index.h"
+#include "deck/deck_reader.h"
+#include "deck/line_index.h"
 
 #include <gtest/gtest.h>
 
 namespace
 {
 using namespace vulnus;
-using namespace vulnus::app;
+using namespace vulnus::deck;
 
 const mpm::BodyParameters& body(const RunParameters& p, const std::string& name)
 {

@@ -1,9 +1,9 @@
 // Output writers: HDF5 + XDMF particle output read back through the HDF5 API, CSV history,
 // atomic files (no .tmp left behind, no partial file on failure), summary.json.
-#include "app/atomic_file.h"
-#include "app/csv_history.h"
-#include "app/particle_output.h"
-#include "app/summary_json.h"
+#include "io/atomic_file.h"
+#include "io/csv_history.h"
+#include "io/particle_output.h"
+#include "io/summary_json.h"
 
 #include "command_runner.h"
 
@@ -16,7 +16,7 @@
 
 namespace
 {
-using namespace vulnus::app;
+using namespace vulnus::io;
 using namespace vulnus::testing;
 namespace fs = std::filesystem;
 

@@ -1,15 +1,15 @@
 // The same scene (slab with a velocity-driven hole, fixed sides) on all ranks of
 // MPI_COMM_WORLD and on MPI_COMM_SELF of every rank: the results must agree to solver
 // tolerance (run under `mpirun -np 2`; with one rank it compares two serial runs). Also a
-// pure FE scene through run_fe_scene with HDF5/XDMF output.
+// traction-loaded slab stepped to its end time with HDF5/XDMF output.
 #include "fem/far_field_solver.h"
-#include "fem/fe_scene.h"
 #include "fem_test_scenes.h"
 
 #include <deal.II/base/mpi.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -117,7 +117,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, SameOnOneAndTwoRanks,
                                            TimeIntegrator::newmark),
                          integrator_name);
 
-TEST(FeScene, RunsAndWritesXdmfTimeSeries)
+TEST(FeScene, TractionWorkBecomesKineticAndStrainEnergy)
 {
   FeSceneParameters p = holed_slab(TimeIntegrator::central_difference);
   p.interface_condition = InterfaceCondition::free;
@@ -125,27 +125,32 @@ TEST(FeScene, RunsAndWritesXdmfTimeSeries)
   p.faces[2].value = {{0.0, 500.0, 0.0}}; // Pa, pushing into the slab
   p.faces[2].profile = {TimeProfile::Kind::ramp, 1e-3};
   p.end_time = 1e-3;
-  p.output_interval = 5e-4;
-  p.log_interval = 1000;
   const std::string directory =
       (std::filesystem::temp_directory_path() / "vulnus_fem_scene_test").string();
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  {
     std::filesystem::remove_all(directory);
+    std::filesystem::create_directories(directory);
+  }
   MPI_Barrier(MPI_COMM_WORLD);
-  std::ostringstream log;
-  const FeSceneResult r = run_fe_scene(p, directory, log, MPI_COMM_WORLD);
-  EXPECT_GT(r.n_steps, 10u);
-  EXPECT_NEAR(r.time, 1e-3, 1e-12);
-  EXPECT_EQ(r.n_outputs, 3u);
-  EXPECT_GT(r.kinetic_energy + r.strain_energy, 0.0);
-  // Energy balance: work of the traction = kinetic + strain energy (no dissipation).
-  EXPECT_NEAR(r.kinetic_energy + r.strain_energy, r.external_work, 0.02 * r.external_work);
-  EXPECT_EQ(r.n_failed_points, 0u);
+  FarFieldSolver solver(p, MPI_COMM_WORLD);
+  solver.setup();
+  solver.write_output(directory);
+  while (solver.time() < p.end_time * (1 - 1e-12))
+    solver.advance(std::min(solver.next_time_step(), p.end_time - solver.time()));
+  solver.write_output(directory);
+  const FeDiagnostics d = solver.diagnostics();
+  EXPECT_GT(solver.step_number(), 10u);
+  EXPECT_NEAR(solver.time(), 1e-3, 1e-12);
+  EXPECT_GT(d.kinetic_energy + d.strain_energy, 0.0);
+  // Energy balance: work of the traction = kinetic + strain energy (no dissipation); the
+  // central difference scheme conserves it to O(dt^2), 2 % at this step.
+  EXPECT_NEAR(d.kinetic_energy + d.strain_energy, d.external_work, 0.02 * d.external_work);
+  EXPECT_EQ(d.n_failed_points, 0u);
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
   {
     EXPECT_TRUE(std::filesystem::exists(directory + "/fe_mesh.xdmf"));
-    EXPECT_TRUE(std::filesystem::exists(directory + "/fe_mesh_00002.h5"));
-    EXPECT_TRUE(std::filesystem::exists(directory + "/fe_history.csv"));
+    EXPECT_TRUE(std::filesystem::exists(directory + "/fe_mesh_00001.h5"));
   }
 }
 } // namespace

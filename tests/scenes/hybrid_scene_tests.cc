@@ -90,7 +90,7 @@ TEST(PureFeScene, RunsFromItsDeckAndClosesTheEnergyBalance)
   EXPECT_GT(s["energy"]["external_work_J"].get<double>(), 0.0);
   EXPECT_LT(std::abs(s["energy"]["balance_error"].get<double>()), 0.02);
   EXPECT_TRUE(fs::exists(scratch.path / "fe" / "fe_mesh.xdmf"));
-  EXPECT_TRUE(fs::exists(scratch.path / "fe" / "fe_history.csv"));
+  EXPECT_TRUE(fs::exists(scratch.path / "fe" / "history.csv"));
 }
 
 TEST(PureFeScene, RefusesASecondBody)

@@ -1,7 +1,7 @@
 // The coarse paper scene, read from its deck and run for a short time: the bullet enters
 // the slab and slows, tissue fails around the tract and only there, and the energy balance
 // (kinetic + strain + dissipated against the initial energy) closes.
-#include "app/deck_reader.h"
+#include "deck/deck_reader.h"
 #include "mpm/solver.h"
 
 #include <gtest/gtest.h>
@@ -31,9 +31,9 @@ struct ShortRun
   double energy_error = 0.0;
 };
 
-ShortRun run_briefly(const std::string& deck_name, const std::vector<app::DeckOverride>& overrides)
+ShortRun run_briefly(const std::string& deck_name, const std::vector<deck::DeckOverride>& overrides)
 {
-  const app::RunParameters parameters = app::read_run_parameters(deck(deck_name), overrides);
+  const deck::RunParameters parameters = deck::read_run_parameters(deck(deck_name), overrides);
   mpm::Solver solver(parameters.scene);
   while (!solver.finished())
     solver.advance();

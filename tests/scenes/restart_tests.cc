@@ -30,31 +30,6 @@ std::string scene_arguments(const std::string& extra = "")
          extra;
 }
 
-/// Starts `vulnus run ...` in `directory` without waiting; stdout and stderr go to files.
-pid_t start_vulnus(const std::string& arguments, const fs::path& directory, const std::string& log)
-{
-  const std::string command = "exec '" + vulnus_binary() + "' run " + arguments + " >'" +
-                              (directory / (log + ".out")).string() + "' 2>'" +
-                              (directory / (log + ".err")).string() + "'";
-  const pid_t pid = fork();
-  if (pid == 0)
-  {
-    if (chdir(directory.c_str()) != 0)
-      _exit(127);
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  return pid;
-}
-
-int wait_for(const pid_t pid, int& signal)
-{
-  int status = 0;
-  waitpid(pid, &status, 0);
-  signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 std::size_t n_checkpoints(const fs::path& run)
 {
   std::size_t n = 0;

@@ -1,0 +1,93 @@
+// Builds summary.json from the final MPM state.
+#include "analysis/mpm_summary.h"
+
+#include "analysis/wound_metrics.h"
+
+#include <algorithm>
+
+namespace vulnus::analysis
+{
+namespace
+{
+/// A wound of fewer than three points has no shape: aspect ratio and axis are null.
+nlohmann::json face_json(const FaceWound& w)
+{
+  const bool has_shape = w.n_points >= 3;
+  return {{"equivalent_diameter_m", w.equivalent_diameter},
+          {"aspect_ratio", has_shape ? nlohmann::json(w.aspect_ratio) : nlohmann::json()},
+          {"major_axis_direction",
+           has_shape ? nlohmann::json{w.major_axis[0], w.major_axis[1], w.major_axis[2]}
+                     : nlohmann::json()},
+          {"failed_points", w.n_points},
+          {"area_m2", w.area}};
+}
+} // namespace
+
+double accounted_energy(const mpm::Solver& solver, const mpm::SceneDiagnostics& d)
+{
+  return d.kinetic_energy + d.strain_energy + d.potential_energy + d.dissipated_energy +
+         solver.contact_dissipation() + solver.removed_energy();
+}
+
+nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
+                           const WoundSample& sample, const mpm::SceneDiagnostics& d)
+{
+  const mpm::Vector3 axis = solver.flight_direction();
+  const int projectile = solver.projectile();
+  const WoundMetrics wound = wound_metrics_of(sample, solver);
+
+  nlohmann::json j;
+  j["completed"] = totals.completed;
+  if (!totals.completed)
+    j["error"] = totals.error;
+  j["particles"] = sample.n_points;
+  j["mpi"] = {{"ranks", solver.rank_group().size()}, {"bytes_sent", totals.mpi_bytes_sent}};
+  j["fe_cells"] = 0;
+  j["steps"] = solver.step_count();
+  j["time_s"] = solver.time();
+  j["wall_seconds"] = totals.wall_seconds;
+  j["particle_steps_per_second"] =
+    totals.wall_seconds > 0 ? double(sample.n_points) * solver.step_count() / totals.wall_seconds : 0.0;
+  j["failed"] = {{"matrix", wound.counts[1]}, {"fiber", wound.counts[2]}, {"total", wound.counts[3]}};
+  j["failed_volume_m3"] = {{"matrix", wound.volumes[1]}, {"fiber", wound.volumes[2]}, {"total", wound.volumes[3]}};
+  j["entrance_wound"] = face_json(wound.entrance);
+  j["exit_wound"] = face_json(wound.exit);
+  j["tract"] = {{"depth_m", wound.tract_depth}, {"area_m2", wound.tract_area}};
+
+  nlohmann::json bullet = nlohmann::json::object();
+  if (projectile >= 0)
+  {
+    const mpm::BodySummary& b = d.bodies[projectile];
+    const double speed = b.velocity.dot(axis);
+    bullet["initial_velocity_m_s"] = totals.projectile_initial_speed;
+    bullet["exit_velocity_m_s"] = speed;
+    bullet["kinetic_energy_lost_J"] = totals.projectile_initial_kinetic_energy - b.kinetic_energy;
+    bullet["max_von_mises_over_yield"] = solver.peak_von_mises_over_yield()[projectile];
+    bullet["position_m"] = {b.centroid[0], b.centroid[1], b.centroid[2]};
+    bullet["rigid"] = solver.body_material(projectile).is_rigid();
+    // Fastest point of the other bodies over the run, against the projectile's initial speed.
+    double fastest = 0.0;
+    for (std::size_t other = 0; other < solver.peak_point_speeds().size(); ++other)
+      if (static_cast<int>(other) != projectile)
+        fastest = std::max(fastest, solver.peak_point_speeds()[other]);
+    j["max_target_speed_m_s"] = fastest;
+    j["max_target_speed_over_initial"] =
+      totals.projectile_initial_speed > 0 ? fastest / totals.projectile_initial_speed : 0.0;
+  }
+  j["bullet"] = bullet;
+
+  const double initial = solver.initial_energy();
+  j["energy"] = {{"initial_J", initial},
+                 {"kinetic_J", d.kinetic_energy},
+                 {"strain_J", d.strain_energy},
+                 {"potential_J", d.potential_energy},
+                 {"dissipated_J", d.dissipated_energy + solver.contact_dissipation()},
+                 {"dissipated_material_J", d.dissipated_energy},
+                 {"dissipated_contact_J", solver.contact_dissipation()},
+                 {"outflow_J", solver.removed_energy()},
+                 {"balance_error", initial > 0 ? (accounted_energy(solver, d) - initial) / initial : 0.0}};
+  j["removed_points"] = solver.removed_points();
+  j["warnings"] = totals.warnings;
+  return j;
+}
+} // namespace vulnus::analysis

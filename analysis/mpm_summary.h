@@ -1,0 +1,34 @@
+// summary.json of an MPM run: counts, throughput, failure by type, wound metrics, bullet
+// kinematics and the energy budget (keys listed in the wound-analysis issue and the README).
+#pragma once
+
+#include "analysis/wound_sample.h"
+#include "mpm/solver.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace vulnus::analysis
+{
+struct RunTotals
+{
+  double wall_seconds = 0.0;
+  double projectile_initial_speed = 0.0;
+  double projectile_initial_kinetic_energy = 0.0;
+  bool completed = true;
+  std::string error; ///< blow-up message when not completed
+  std::vector<std::string> warnings;
+  std::uint64_t mpi_bytes_sent = 0; ///< over all ranks
+};
+
+/// Total energy accounted for (J): kinetic + strain + potential + dissipated in the materials,
+/// by contact and carried out of the grid by removed points.
+double accounted_energy(const mpm::Solver& solver, const mpm::SceneDiagnostics& d);
+
+/// `sample`: the target's failed points and intact totals over all ranks
+/// (collect_wound_sample, complete on rank 0), `d`: the diagnostics over all ranks.
+nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
+                           const WoundSample& sample, const mpm::SceneDiagnostics& d);
+} // namespace vulnus::analysis

@@ -1,0 +1,32 @@
+// What the wound metrics of summary.json need from the target's points, collected from every
+// rank without gathering the points themselves: the failed points in full (reference
+// position, volume, flag) and the intact ones as a count and a volume.
+#pragma once
+
+#include "mpm/solver.h"
+#include "analysis/wound_metrics.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace vulnus::analysis
+{
+struct WoundSample
+{
+  std::vector<mpm::Vector3> failed_position; ///< reference positions of failed target points
+  std::vector<double> failed_volume;         ///< their reference volumes, m^3
+  std::vector<std::uint8_t> failed_flag;     ///< their failure flags (1, 2, 3)
+  std::uint64_t n_intact = 0;                ///< intact target points
+  double intact_volume = 0.0;                ///< m^3
+  double entrance = 0.0; ///< lowest reference extent of the target along the flight axis, m
+  double exit = 0.0;     ///< highest, m
+  bool has_target = false;
+  std::uint64_t n_points = 0; ///< every point of the scene, all bodies
+};
+
+/// Collective; the sample is complete on rank 0 (the others get their own share).
+WoundSample collect_wound_sample(const mpm::Solver& solver);
+
+/// The wound metrics of the sample (on rank 0).
+WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solver);
+} // namespace vulnus::analysis

@@ -1,0 +1,16 @@
+// Compares two resolved decks (the PRM text of deck_used.prm) entry by entry, to tell whether
+// a checkpoint belongs to the deck a restart is given.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace vulnus::deck
+{
+/// The first entry whose value differs between two resolved decks, as
+/// "Section/Entry: 'a' in the checkpoint, 'b' in the deck", or "" when they agree. Entries
+/// whose full path starts with one of `ignored` (e.g. "Output/", "Time/End time") are not
+/// compared; an entry present in only one deck counts as a difference.
+std::string first_deck_difference(const std::string& checkpoint_deck, const std::string& deck,
+                                  const std::vector<std::string>& ignored);
+} // namespace vulnus::deck

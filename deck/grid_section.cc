@@ -1,0 +1,101 @@
+// Deck section `Grid`: the MPM background grid, shape functions, update scheme and the
+// boundary conditions on the faces of the grid domain.
+#include "deck/deck_sections.h"
+
+namespace vulnus::deck
+{
+namespace
+{
+const char* const face_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+
+mpm::FaceCondition face_condition(const std::string& text)
+{
+  if (text == "fixed")
+    return mpm::FaceCondition::fixed;
+  if (text == "roller")
+    return mpm::FaceCondition::roller;
+  return mpm::FaceCondition::free;
+}
+} // namespace
+
+void declare_grid_section(EntryTable& table)
+{
+  using namespace dealii;
+  table.enter("Grid");
+  table.declare("Domain min", "-0.025, -0.02, -0.025", point_pattern(),
+                "Lower corner x_min of the background grid domain, `x, y, z` [m]. The default "
+                "puts the x and z faces on the slab's side faces.");
+  table.declare("Domain max", "0.025, 0.03, 0.025", point_pattern(),
+                "Upper corner x_max of the background grid domain, `x, y, z` [m].");
+  table.declare("Cell size", "0.001", Patterns::Double(0.0),
+                "Edge length h of the cubic grid cells [m]; must be > 0. The paper uses 1 mm.");
+  table.declare("Shape function", "linear", Patterns::Selection("linear|gimp"),
+                "Grid shape functions: linear (tent) or gimp (generalized interpolation).");
+  table.declare("Update scheme", "MUSL", Patterns::Selection("USL|MUSL"),
+                "Stress update: USL (update stress last) or MUSL (modified USL, velocities "
+                "re-mapped to the grid before the stress update).");
+  table.declare("Velocity transfer", "FLIP",
+                Patterns::Selection("relaxed PIC|relaxed APIC|APIC|FLIP|PIC"),
+                "How points take their velocity from the grid: relaxed PIC (FLIP increments "
+                "relaxed towards the PIC velocity over the time in Velocity relaxation, a rate "
+                "fixed in time so the answer does not depend on the step count; hybrid runs "
+                "use FLIP, which the interface exchange assumes), relaxed APIC (the same "
+                "towards APIC), APIC (affine particle-in-cell, "
+                "Jiang et al. 2015: PIC plus the velocity gradient at the point, which keeps "
+                "rotation and shear without FLIP's noise), FLIP (velocity increments; no "
+                "damping, overshoots where contact changes a node's velocity) or PIC (damps "
+                "every mode the grid cannot hold).");
+  table.declare("Velocity relaxation", "1", Patterns::Double(1e-3, 1e3),
+                "relaxed PIC and APIC: relaxation time tau of the FLIP part in Courant times h / max(c + "
+                "|v|) (the step at CFL 1) [-]; the FLIP fraction per step is exp(-dt / tau).");
+  table.declare("Deformation update", "midpoint", Patterns::Selection("midpoint|forward Euler"),
+                "Update of the deformation gradient over a step with velocity gradient L: "
+                "midpoint F <- (I - dt L/2)^-1 (I + dt L/2) F (second order, exact for rigid "
+                "spin) or forward Euler F <- (I + dt L) F (first order: a spinning point "
+                "stretches by (1 + (w dt)^2)^(1/2) per step).");
+  table.declare("Points leaving the grid", "stop", Patterns::Selection("stop|remove"),
+                "stop: a point leaving the grid ends the run as a blow-up (last good state "
+                "kept); remove: it is removed and its energy and momentum booked as outflow "
+                "(fragments flying off the exit face).");
+  table.enter("Boundary conditions");
+  for (unsigned int face = 0; face < 6; ++face)
+  {
+    const bool side = face < 2 || face > 3;
+    table.declare(face_names[face], side ? "fixed" : "free",
+                  Patterns::Selection("free|fixed|roller"),
+                  std::string("Condition on the domain face ") + face_names[face] +
+                      ": free, fixed (zero velocity) or roller (zero normal velocity). The paper "
+                      "fixes the x and z faces and leaves the y faces free.");
+  }
+  table.leave();
+  table.leave();
+}
+
+void parse_grid_section(dealii::ParameterHandler& prm, mpm::SceneParameters& scene)
+{
+  prm.enter_subsection("Grid");
+  scene.domain_min = get_point(prm, "Domain min");
+  scene.domain_max = get_point(prm, "Domain max");
+  scene.cell_size = prm.get_double("Cell size");
+  scene.shape_function =
+      prm.get("Shape function") == "gimp" ? mpm::ShapeFunction::gimp : mpm::ShapeFunction::linear;
+  scene.update_scheme =
+      prm.get("Update scheme") == "USL" ? mpm::UpdateScheme::usl : mpm::UpdateScheme::musl;
+  const std::string transfer = prm.get("Velocity transfer");
+  scene.velocity_transfer = transfer == "FLIP"   ? mpm::VelocityTransfer::flip
+                            : transfer == "PIC"  ? mpm::VelocityTransfer::pic
+                            : transfer == "APIC" ? mpm::VelocityTransfer::apic
+                            : transfer == "relaxed PIC" ? mpm::VelocityTransfer::relaxed_pic
+                                                 : mpm::VelocityTransfer::relaxed_apic;
+  scene.velocity_relaxation = prm.get_double("Velocity relaxation");
+  scene.deformation_update = prm.get("Deformation update") == "forward Euler"
+                                 ? mpm::DeformationUpdate::forward_euler
+                                 : mpm::DeformationUpdate::midpoint;
+  scene.remove_points_leaving_grid = prm.get("Points leaving the grid") == "remove";
+  prm.enter_subsection("Boundary conditions");
+  for (unsigned int face = 0; face < 6; ++face)
+    scene.domain_faces[face] = face_condition(prm.get(face_names[face]));
+  prm.leave_subsection();
+  prm.leave_subsection();
+}
+} // namespace vulnus::deck

@@ -1,0 +1,46 @@
+// Deck section `Hybrid`: the MPM zone around the tract, the body it splits and the coupling
+// scheme (docs/DESIGN.md section 6). A hybrid deck differs from its pure-MPM reference only here.
+#include "deck/deck_sections.h"
+
+namespace vulnus::deck
+{
+void declare_hybrid_section(EntryTable& table)
+{
+  using namespace dealii;
+  table.enter("Hybrid");
+  table.declare("Enabled", "false", Patterns::Bool(),
+                "true: the split body is MPM inside the zone and finite elements outside, "
+                "coupled on the zone surface every step.");
+  table.declare("Zone min", "-0.012, 0, -0.012", point_pattern(),
+                "Lower corner of the MPM zone [m], on grid nodes (Grid/Domain min + k h).");
+  table.declare("Zone max", "0.012, 0.01, 0.012", point_pattern(),
+                "Upper corner of the MPM zone [m], on grid nodes; the zone must hold the "
+                "bullet path with its radius plus one cell, and the tissue that fails.");
+  table.declare("Body", "", Patterns::Anything(),
+                "Body split into zone and far field; empty: the only deformable box body "
+                "that is not the projectile.");
+  table.declare("Scheme", "multi step", Patterns::Selection("same step|multi step"),
+                "same step: one time step, interface nodes shared (momentum exact); multi "
+                "step: the far field steps over several MPM substeps (its own CFL step, or "
+                "Far field/Time step when implicit).");
+  table.declare("Substeps", "0", Patterns::Integer(0, 100000),
+                "Multi step: at most this many MPM substeps per FE step (0: no limit; the FE "
+                "step is then its own stable or deck step).");
+  table.leave();
+}
+
+void parse_hybrid_section(dealii::ParameterHandler& prm, coupling::HybridParameters& hybrid)
+{
+  prm.enter_subsection("Hybrid");
+  hybrid.enabled = prm.get_bool("Enabled");
+  const Eigen::Vector3d lo = get_point(prm, "Zone min");
+  const Eigen::Vector3d hi = get_point(prm, "Zone max");
+  hybrid.zone_min = {lo[0], lo[1], lo[2]};
+  hybrid.zone_max = {hi[0], hi[1], hi[2]};
+  hybrid.body = prm.get("Body");
+  hybrid.scheme = prm.get("Scheme") == "same step" ? coupling::CouplingScheme::same_step
+                                                    : coupling::CouplingScheme::multi_step;
+  hybrid.substeps = static_cast<unsigned int>(prm.get_integer("Substeps"));
+  prm.leave_subsection();
+}
+} // namespace vulnus::deck

@@ -1,0 +1,200 @@
+// Deck subsections `Material <name>`: the model (a name from the material registry) and one
+// subsection per model family with its parameters. Materials named `tissue` and `bullet`
+// default to the paper's values (docs/DESIGN.md section 2).
+#include "deck/deck_checks.h"
+#include "deck/deck_sections.h"
+
+#include "materials/material_registry.h"
+
+#include <algorithm>
+
+namespace vulnus::deck
+{
+namespace
+{
+using namespace dealii;
+
+enum class ParameterGroup
+{
+  tissue_with_fibers,
+  tissue_isotropic,
+  elastic_plastic,
+  none
+};
+
+ParameterGroup group_of(const std::string& model)
+{
+  if (model == "transversely isotropic hyperelastic")
+    return ParameterGroup::tissue_with_fibers;
+  if (model == "isotropic hyperelastic")
+    return ParameterGroup::tissue_isotropic;
+  if (model.find("plastic") != std::string::npos)
+    return ParameterGroup::elastic_plastic;
+  return ParameterGroup::none;
+}
+
+std::string selection_of(const std::vector<std::string>& names)
+{
+  std::string joined;
+  for (const std::string& name : names)
+    joined += (joined.empty() ? "" : "|") + name;
+  return joined;
+}
+
+const char* shear_measure_names[3] = {"E1-E3", "(E1-E3)/2", "ln(l1/l3)"};
+
+void declare_tissue(EntryTable& table, const materials::TissueParameters& d, const bool with_fibers)
+{
+  table.declare("c1", format_number(d.c1), Patterns::Double(0.0),
+                "Mooney-Rivlin constant c1 [Pa]; > 0 (the paper: 2.1 kPa).");
+  table.declare("c2", format_number(d.c2), Patterns::Double(0.0),
+                "Mooney-Rivlin constant c2 [Pa]; >= 0 (the paper: 0).");
+  if (with_fibers)
+  {
+    table.declare("c3", format_number(d.c3), Patterns::Double(0.0),
+                  "Fiber toe-region stress scale c3 [Pa] (the paper: 0.14 kPa).");
+    table.declare("c4", format_number(d.c4), Patterns::Double(0.0),
+                  "Fiber uncrimping rate c4 [-] (the paper: 22).");
+    table.declare("c5", format_number(d.c5), Patterns::Double(0.0),
+                  "Modulus c5 of straightened fibers [Pa] (the paper: 100 kPa).");
+    table.declare("Lambda star", format_number(d.lambda_star), Patterns::Double(1.0),
+                  "Fiber stretch lambda* where fibers straighten [-]; >= 1 (the paper: 1.4).");
+  }
+  table.declare("Bulk modulus", format_number(d.bulk_modulus), Patterns::Double(0.0),
+                "Bulk modulus K in U(J) = K/2 (ln J)^2 [Pa] (default 200 kPa; 100 kPa and "
+                "100 MPa are studied too).");
+  table.enter("Failure");
+  table.declare("Enabled", d.failure.enabled ? "true" : "false", Patterns::Bool(),
+                "Two-surface failure of matrix and fibers (paper eqs. 5-6).");
+  table.declare("Shear measure", shear_measure_names[static_cast<int>(d.failure.shear_measure)],
+                Patterns::Selection("E1-E3|(E1-E3)/2|ln(l1/l3)"),
+                "Maximum shear strain measure compared with the matrix limit: E1-E3 of the "
+                "principal Green strains, (E1-E3)/2, or ln(l1/l3) of the principal stretches.");
+  table.declare("Matrix shear limit", format_number(d.failure.matrix_shear_limit),
+                Patterns::Double(0.0),
+                "Matrix failure limit gamma_crit [-]; > 0 (the paper: 0.5).");
+  if (with_fibers)
+    table.declare("Fiber stretch limit", format_number(d.failure.fiber_stretch_limit),
+                  Patterns::Double(1.0),
+                  "Fiber failure limit lambda_crit on the total fiber stretch [-]; > 1 (the "
+                  "paper: 1.4, a fiber strain of 40 %).");
+  table.leave();
+}
+
+void parse_tissue(ParameterHandler& prm, materials::TissueParameters& t, const bool with_fibers)
+{
+  t.with_fibers = with_fibers;
+  t.c1 = prm.get_double("c1");
+  t.c2 = prm.get_double("c2");
+  if (with_fibers)
+  {
+    t.c3 = prm.get_double("c3");
+    t.c4 = prm.get_double("c4");
+    t.c5 = prm.get_double("c5");
+    t.lambda_star = prm.get_double("Lambda star");
+  }
+  else
+    t.c3 = t.c5 = 0.0;
+  t.bulk_modulus = prm.get_double("Bulk modulus");
+  prm.enter_subsection("Failure");
+  t.failure.enabled = prm.get_bool("Enabled");
+  const std::string measure = prm.get("Shear measure");
+  for (unsigned int m = 0; m < 3; ++m)
+    if (measure == shear_measure_names[m])
+      t.failure.shear_measure = static_cast<materials::ShearMeasure>(m);
+  t.failure.matrix_shear_limit = prm.get_double("Matrix shear limit");
+  if (with_fibers)
+    t.failure.fiber_stretch_limit = prm.get_double("Fiber stretch limit");
+  prm.leave_subsection();
+}
+
+void declare_elastic_plastic(EntryTable& table, const materials::ElasticPlasticParameters& d)
+{
+  table.declare("Bulk modulus", format_number(d.bulk_modulus), Patterns::Double(0.0),
+                "Bulk modulus K [Pa]; > 0 (the paper's bullet: 117 GPa).");
+  table.declare("Shear modulus", format_number(d.shear_modulus), Patterns::Double(0.0),
+                "Shear modulus mu [Pa]; > 0 (the paper's bullet: 53.8 GPa).");
+  table.declare("Yield stress", format_number(d.yield_stress), Patterns::Double(0.0),
+                "Initial yield stress sigma_y [Pa]; > 0 (the paper's bullet: 422.6 MPa).");
+  table.declare("Hardening modulus", format_number(d.hardening_modulus), Patterns::Double(0.0),
+                "Linear isotropic hardening modulus H [Pa]; >= 0 (the paper's bullet: 53.8 MPa).");
+}
+
+void parse_elastic_plastic(ParameterHandler& prm, materials::ElasticPlasticParameters& e)
+{
+  e.bulk_modulus = prm.get_double("Bulk modulus");
+  e.shear_modulus = prm.get_double("Shear modulus");
+  e.yield_stress = prm.get_double("Yield stress");
+  e.hardening_modulus = prm.get_double("Hardening modulus");
+}
+
+std::string default_model(const std::string& material, const std::vector<std::string>& models)
+{
+  auto has = [&](const std::string& m)
+  { return std::find(models.begin(), models.end(), m) != models.end(); };
+  if (material == "bullet")
+  {
+    for (const std::string& m : models)
+      if (group_of(m) == ParameterGroup::elastic_plastic)
+        return m;
+    if (has("rigid"))
+      return "rigid";
+  }
+  if (has("transversely isotropic hyperelastic"))
+    return "transversely isotropic hyperelastic";
+  return models.empty() ? std::string() : models.front();
+}
+} // namespace
+
+void declare_material_sections(EntryTable& table, const std::vector<std::string>& names)
+{
+  const std::vector<std::string> models = materials::registered_model_names();
+  const materials::MaterialParameters defaults;
+  for (const std::string& name : names)
+  {
+    table.enter("Material " + name);
+    table.declare("Model", default_model(name, models), Patterns::Selection(selection_of(models)),
+                  "Constitutive model of this material; its entries are in the subsection of "
+                  "the same name (capitalized).");
+    for (const std::string& model : models)
+    {
+      const ParameterGroup group = group_of(model);
+      if (group == ParameterGroup::none)
+        continue;
+      table.enter(model_subsection(model));
+      if (group == ParameterGroup::elastic_plastic)
+        declare_elastic_plastic(table, defaults.elastic_plastic);
+      else
+        declare_tissue(table, defaults.tissue, group == ParameterGroup::tissue_with_fibers);
+      table.leave();
+    }
+    table.leave();
+  }
+}
+
+std::vector<mpm::NamedMaterial> parse_material_sections(ParameterHandler& prm,
+                                                        const std::vector<std::string>& names)
+{
+  std::vector<mpm::NamedMaterial> result;
+  for (const std::string& name : names)
+  {
+    prm.enter_subsection("Material " + name);
+    mpm::NamedMaterial material;
+    material.name = name;
+    material.parameters.model = prm.get("Model");
+    const ParameterGroup group = group_of(material.parameters.model);
+    if (group != ParameterGroup::none)
+    {
+      prm.enter_subsection(model_subsection(material.parameters.model));
+      if (group == ParameterGroup::elastic_plastic)
+        parse_elastic_plastic(prm, material.parameters.elastic_plastic);
+      else
+        parse_tissue(prm, material.parameters.tissue, group == ParameterGroup::tissue_with_fibers);
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+    result.push_back(material);
+  }
+  return result;
+}
+} // namespace vulnus::deck

@@ -1,0 +1,61 @@
+// Deck sections `Output` (what goes into the run directory, how often) and `Run` (threads,
+// particle sorting).
+#include "deck/deck_sections.h"
+
+namespace vulnus::deck
+{
+void declare_output_section(EntryTable& table)
+{
+  using namespace dealii;
+  table.enter("Output");
+  table.declare("Directory", "", Patterns::Anything(),
+                "Run directory; empty means runs/<deck name without .prm>. `vulnus run "
+                "--output DIR` sets it.");
+  table.declare("Particle output interval", "1e-05", Patterns::Double(0.0),
+                "Simulated time between particle outputs (HDF5 + XDMF) [s]; 0 writes the first "
+                "and last states only.");
+  table.declare("History interval", "10", Patterns::Integer(1),
+                "Steps between rows of the CSV time history.");
+  table.declare("Checkpoint step interval", "0", Patterns::Integer(0),
+                "Steps between checkpoints (run directory, checkpoints/); 0: none by step. "
+                "`vulnus run DECK --restart RUN_DIR` continues from the newest. Pure-MPM scenes.");
+  table.declare("Checkpoint wall interval", "0", Patterns::Double(0.0),
+                "Wall-clock seconds between checkpoints; 0: none by wall time. A run stopped "
+                "by SIGINT or SIGTERM always writes one. Pure-MPM scenes.");
+  table.declare("Checkpoints kept", "2", Patterns::Integer(1, 1000),
+                "Number of newest checkpoints kept; older ones are deleted.");
+  table.leave();
+}
+
+void parse_output_section(dealii::ParameterHandler& prm, OutputParameters& output)
+{
+  prm.enter_subsection("Output");
+  output.directory = prm.get("Directory");
+  output.particle_interval = prm.get_double("Particle output interval");
+  output.history_interval = static_cast<unsigned int>(prm.get_integer("History interval"));
+  output.checkpoint_step_interval =
+    static_cast<unsigned int>(prm.get_integer("Checkpoint step interval"));
+  output.checkpoint_wall_interval = prm.get_double("Checkpoint wall interval");
+  output.checkpoints_kept = static_cast<unsigned int>(prm.get_integer("Checkpoints kept"));
+  prm.leave_subsection();
+}
+
+void declare_run_section(EntryTable& table)
+{
+  using namespace dealii;
+  table.enter("Run");
+  table.declare("Threads", "0", Patterns::Integer(0, 4096),
+                "Number of threads; 0 uses all available. `vulnus run --threads N` sets it.");
+  table.declare("Sort interval", "50", Patterns::Integer(1),
+                "Steps between re-sorting the particles by grid cell.");
+  table.leave();
+}
+
+void parse_run_section(dealii::ParameterHandler& prm, mpm::SceneParameters& scene)
+{
+  prm.enter_subsection("Run");
+  scene.n_threads = static_cast<unsigned int>(prm.get_integer("Threads"));
+  scene.sort_interval = static_cast<unsigned int>(prm.get_integer("Sort interval"));
+  prm.leave_subsection();
+}
+} // namespace vulnus::deck

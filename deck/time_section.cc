@@ -1,0 +1,40 @@
+// Deck section `Time`: end of the run and the explicit time step (CFL, bounds, viscosity).
+#include "deck/deck_sections.h"
+
+namespace vulnus::deck
+{
+void declare_time_section(EntryTable& table)
+{
+  using namespace dealii;
+  table.enter("Time");
+  table.declare("End time", "0.0003", Patterns::Double(0.0),
+                "Simulated end time t_end [s]; must be > 0.");
+  table.declare("CFL", "0.4", Patterns::Double(0.0, 1.0),
+                "Courant number C in dt = C h / max(c + |v|), in (0, 1]; rigid bodies are "
+                "excluded from the maximum.");
+  table.declare("Artificial viscosity linear", "0", Patterns::Double(0.0),
+                "Linear bulk viscosity coefficient q1 [-] (0: off).");
+  table.declare("Artificial viscosity quadratic", "0", Patterns::Double(0.0),
+                "Quadratic bulk viscosity coefficient q2 [-] (0: off).");
+  table.declare("Maximum time step", "1", Patterns::Double(0.0),
+                "Cap dt_max on the time step [s]; must be > 0.");
+  table.declare("Minimum time step", "1e-12", Patterns::Double(0.0),
+                "Floor dt_min [s]: a step below it stops the run as a blow-up.");
+  table.declare("Stop when projectile exits", "true", Patterns::Bool(),
+                "Stop once the projectile's tail has left every other body, before t_end.");
+  table.leave();
+}
+
+void parse_time_section(dealii::ParameterHandler& prm, mpm::SceneParameters& scene)
+{
+  prm.enter_subsection("Time");
+  scene.end_time = prm.get_double("End time");
+  scene.cfl = prm.get_double("CFL");
+  scene.artificial_viscosity_linear = prm.get_double("Artificial viscosity linear");
+  scene.artificial_viscosity_quadratic = prm.get_double("Artificial viscosity quadratic");
+  scene.max_time_step = prm.get_double("Maximum time step");
+  scene.min_time_step = prm.get_double("Minimum time step");
+  scene.stop_when_projectile_exits = prm.get_bool("Stop when projectile exits");
+  prm.leave_subsection();
+}
+} // namespace vulnus::deck

@@ -1,0 +1,110 @@
+// Checkpoint files of a run: naming, atomic writing, pruning and newest-complete lookup.
+#include "io/checkpoint_store.h"
+
+#include "io/atomic_file.h"
+#include "mpm/binary_io.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace vulnus::io
+{
+namespace
+{
+using namespace mpm::binary;
+
+constexpr char header_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '1'};
+constexpr char trailer_tag[8] = {'V', 'U', 'L', 'N', 'E', 'N', 'D', '1'};
+constexpr const char* prefix = "step_";
+constexpr const char* suffix = ".chk";
+} // namespace
+
+CheckpointStore::CheckpointStore(const std::string& run_directory, const unsigned int keep,
+                                 const std::string& folder_name)
+    : folder((std::filesystem::path(run_directory) / folder_name).string()), keep(std::max(1u, keep))
+{
+}
+
+std::string CheckpointStore::write(const std::uint64_t step, const RunProgress& progress,
+                                   const std::function<void(std::ostream&)>& write_state) const
+{
+  std::filesystem::create_directories(folder);
+  char name[40];
+  std::snprintf(name, sizeof(name), "%s%010llu%s", prefix, static_cast<unsigned long long>(step), suffix);
+  const std::string path = (std::filesystem::path(folder) / name).string();
+  write_file_atomically(path,
+                        [&](std::ostream& out)
+                        {
+                          out.write(header_tag, sizeof(header_tag));
+                          put_text(out, progress.resolved_deck);
+                          put(out, progress.next_output);
+                          put(out, progress.history_bytes);
+                          put(out, progress.wall_seconds);
+                          put_text(out, progress.output_records);
+                          write_state(out);
+                          out.write(trailer_tag, sizeof(trailer_tag));
+                        });
+  const std::vector<std::string> all = files();
+  for (std::size_t i = keep; i < all.size(); ++i)
+    std::filesystem::remove(all[i]);
+  return path;
+}
+
+std::vector<std::string> CheckpointStore::files() const
+{
+  std::vector<std::string> found;
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error))
+    return found;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error))
+  {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && name.rfind(prefix, 0) == 0 && name.size() > std::strlen(suffix) &&
+        name.compare(name.size() - std::strlen(suffix), std::string::npos, suffix) == 0)
+      found.push_back(entry.path().string());
+  }
+  // Zero-padded step numbers: the lexical order is the step order.
+  std::sort(found.rbegin(), found.rend());
+  return found;
+}
+
+RunProgress CheckpointStore::read_newest(const std::function<void(std::istream&)>& read_state,
+                                         const std::function<void(const std::string&)>& warn,
+                                         std::string& path) const
+{
+  const std::vector<std::string> candidates = files();
+  for (const std::string& candidate : candidates)
+  {
+    try
+    {
+      std::ifstream in(candidate, std::ios::binary);
+      if (!in)
+        throw std::runtime_error("it cannot be opened");
+      expect_tag(in, header_tag, "it is not a vulnus run checkpoint");
+      RunProgress progress;
+      get_text(in, progress.resolved_deck);
+      get(in, progress.next_output);
+      get(in, progress.history_bytes);
+      get(in, progress.wall_seconds);
+      get_text(in, progress.output_records);
+      read_state(in);
+      expect_tag(in, trailer_tag, "it is incomplete (no end tag)");
+      path = candidate;
+      return progress;
+    }
+    catch (const std::exception& error)
+    {
+      warn("checkpoint '" + candidate + "' skipped: " + error.what());
+    }
+  }
+  throw std::runtime_error(candidates.empty()
+                             ? "no checkpoint in '" + folder +
+                                 "' (a run writes them at Output/Checkpoint step interval or "
+                                 "Checkpoint wall interval, and when stopped by SIGINT/SIGTERM)"
+                             : "no complete checkpoint in '" + folder + "'");
+}
+} // namespace vulnus::io

@@ -1,0 +1,119 @@
+// Checkpoint policy, writing and restart.
+#include "simulator/checkpointer.h"
+
+#include "deck/deck_difference.h"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace vulnus::simulator
+{
+namespace
+{
+/// Entries a restart may change: where and how often things are written, threads, and the
+/// end and step size of the time integration (to extend a run, or to continue a blown-up
+/// run from its last checkpoint with a smaller CFL).
+const std::vector<std::string> restart_may_change = {
+  "Output/", "Run/Threads", "Time/End time", "Time/CFL", "Time/Maximum time step",
+  "Time/Stop when projectile exits"};
+
+/// Each rank of a distributed run keeps its own checkpoints in checkpoints/rank_R.
+std::string checkpoint_folder(const mpm::RankGroup& ranks)
+{
+  return ranks.distributed() ? "checkpoints/rank_" + std::to_string(ranks.rank()) : "checkpoints";
+}
+} // namespace
+
+Checkpointer::Checkpointer(const deck::RunParameters& parameters, io::RunDirectory& directory,
+                           const mpm::RankGroup& ranks)
+    : parameters(parameters), directory(directory), ranks(ranks),
+      store(directory.path(), parameters.output.checkpoints_kept, checkpoint_folder(ranks))
+{
+}
+
+void Checkpointer::restart(Stepper& stepper,
+                           const std::vector<std::unique_ptr<Postprocessor>>& postprocessors)
+{
+  std::string used;
+  const io::RunProgress progress =
+    store.read_newest([&](std::istream& in) { stepper.restore(in); },
+                      [&](const std::string& line) { directory.warn(line); }, used);
+  const double step = static_cast<double>(stepper.step_count());
+  if (ranks.max(step) != -ranks.max(-step))
+    throw std::runtime_error("--restart: the ranks' newest complete checkpoints are of different "
+                             "steps (one rank's newest is damaged); remove the newer ones under " +
+                             directory.file("checkpoints") + " so that every rank has the same newest step");
+  const std::string difference = deck::first_deck_difference(
+    progress.resolved_deck, parameters.resolved_deck, restart_may_change);
+  if (!difference.empty())
+    throw std::runtime_error("--restart: the deck does not match the checkpoint '" + used +
+                             "': " + difference + ". Restart with the run's deck (" +
+                             directory.file("deck_used.prm") + ")");
+  directory.write_deck_used(parameters.resolved_deck);
+  for (const auto& p : postprocessors)
+    p->resume(stepper, progress);
+  wall_before_restart = progress.wall_seconds;
+  newest = used;
+  newest_step = stepper.step_count();
+  std::ostringstream o;
+  o << "restarted from " << used << ": step " << stepper.step_count() << ", t = " << stepper.time()
+    << " s, the outputs and the history so far kept";
+  directory.log(o.str());
+}
+
+bool Checkpointer::due(const Stepper& stepper, const double run_wall_seconds) const
+{
+  if (!stepper.can_checkpoint())
+    return false;
+  const deck::OutputParameters& o = parameters.output;
+  if (o.checkpoint_step_interval > 0 && stepper.step_count() % o.checkpoint_step_interval == 0 &&
+      stepper.step_count() != newest_step)
+    return true;
+  return o.checkpoint_wall_interval > 0 &&
+         run_wall_seconds - wall_at_last_checkpoint >= o.checkpoint_wall_interval;
+}
+
+std::string Checkpointer::write(const Stepper& stepper,
+                                const std::vector<std::unique_ptr<Postprocessor>>& postprocessors,
+                                const double run_wall_seconds)
+{
+  io::RunProgress progress;
+  progress.resolved_deck = parameters.resolved_deck;
+  for (const auto& p : postprocessors)
+  {
+    p->flush();
+    p->save_progress(progress);
+  }
+  progress.wall_seconds = wall_before_restart + run_wall_seconds;
+  newest = store.write(stepper.step_count(), progress,
+                       [&](std::ostream& out) { stepper.save(out); });
+  newest_step = stepper.step_count();
+  wall_at_last_checkpoint = run_wall_seconds;
+  return newest;
+}
+
+std::string Checkpointer::last_state() const
+{
+  if (newest.empty())
+    return {};
+  std::ostringstream o;
+  o << "the checkpoint of step " << newest_step << " (" << newest
+    << "; continue with `vulnus run DECK --restart " << directory.path()
+    << "`, a smaller Time/CFL is allowed)";
+  return o.str();
+}
+
+void Checkpointer::log_policy() const
+{
+  const deck::OutputParameters& output = parameters.output;
+  std::ostringstream o;
+  o << "checkpoints: ";
+  if (output.checkpoint_step_interval > 0)
+    o << "every " << output.checkpoint_step_interval << " steps, ";
+  if (output.checkpoint_wall_interval > 0)
+    o << "every " << output.checkpoint_wall_interval << " s of wall time, ";
+  o << "on SIGINT/SIGTERM; newest " << output.checkpoints_kept << " kept in "
+    << directory.file("checkpoints");
+  directory.log(o.str());
+}
+} // namespace vulnus::simulator

@@ -1,0 +1,33 @@
+// The CSV time history (history.csv) of every run type: a row of the stepper's columns at
+// the start, every `history_interval` steps and at the end.
+#pragma once
+
+#include "io/csv_history.h"
+#include "io/run_directory.h"
+#include "simulator/postprocessor.h"
+
+#include <memory>
+
+namespace vulnus::simulator
+{
+class HistoryWriter : public Postprocessor
+{
+public:
+  /// Every rank builds one (the rows are collective); rank 0 writes.
+  HistoryWriter(io::RunDirectory& directory, unsigned int history_interval);
+
+  void start(Stepper& stepper) override;
+  void resume(Stepper& stepper, const io::RunProgress& progress) override;
+  void after_step(Stepper& stepper) override;
+  void finish(Stepper& stepper) override;
+  void flush() override;
+  void save_progress(io::RunProgress& progress) const override;
+
+private:
+  void add_row(const Stepper& stepper);
+
+  io::RunDirectory& directory;
+  unsigned int interval;
+  std::unique_ptr<io::CsvHistory> history; ///< rank 0 only
+};
+} // namespace vulnus::simulator

@@ -1,0 +1,46 @@
+// Rows of the hybrid CSV history.
+#include "simulator/hybrid_history.h"
+
+#include "simulator/mpm_history.h"
+
+#include "analysis/mpm_summary.h"
+
+namespace vulnus::simulator
+{
+double hybrid_scene_energy(const coupling::HybridSolver& solver, const mpm::SceneDiagnostics& m,
+                           const fem::FeDiagnostics& f)
+{
+  return analysis::accounted_energy(solver.mpm(), m) + f.kinetic_energy + f.strain_energy +
+         f.dissipated_energy;
+}
+
+std::vector<std::string> hybrid_history_columns()
+{
+  std::vector<std::string> columns = mpm_history_columns();
+  for (const char* name :
+       {"fe_steps", "fe_kinetic_energy", "fe_strain_energy", "fe_dissipated_energy",
+        "fe_failed_points", "scene_energy", "scene_balance_error", "scene_momentum_x",
+        "scene_momentum_y", "scene_momentum_z", "interface_mpm_work", "interface_fe_work",
+        "interface_energy_error"})
+    columns.push_back(name);
+  return columns;
+}
+
+std::vector<double> hybrid_history_row(const coupling::HybridSolver& solver,
+                                       const double initial_energy)
+{
+  const mpm::SceneDiagnostics m = solver.mpm().diagnostics();
+  const fem::FeDiagnostics f = solver.fe().diagnostics();
+  std::vector<double> row = mpm_history_row(solver.mpm(), m);
+  const double energy = hybrid_scene_energy(solver, m, f);
+  const coupling::InterfaceLedger& ledger = solver.ledger();
+  const Eigen::Vector3d momentum = m.momentum + Eigen::Vector3d(f.momentum[0], f.momentum[1], f.momentum[2]);
+  for (const double value :
+       {double(ledger.fe_steps), f.kinetic_energy, f.strain_energy, f.dissipated_energy,
+        double(f.n_failed_points), energy,
+        initial_energy > 0 ? (energy - initial_energy) / initial_energy : 0.0, momentum[0],
+        momentum[1], momentum[2], ledger.mpm_work, ledger.fe_work, ledger.energy_error()})
+    row.push_back(value);
+  return row;
+}
+} // namespace vulnus::simulator

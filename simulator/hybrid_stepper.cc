@@ -1,0 +1,160 @@
+// The hybrid stepper: scene log, history rows with the interface ledger, summary.
+#include "simulator/hybrid_stepper.h"
+
+#include "analysis/wound_sample.h"
+#include "io/run_directory.h"
+#include "simulator/hybrid_history.h"
+
+#include <omp.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace vulnus::simulator
+{
+namespace
+{
+const char* scheme_name(const coupling::CouplingScheme s)
+{
+  return s == coupling::CouplingScheme::same_step ? "same step" : "multi step";
+}
+
+const char* integrator_name(const fem::TimeIntegrator i)
+{
+  switch (i)
+  {
+  case fem::TimeIntegrator::central_difference:
+    return "explicit central difference";
+  case fem::TimeIntegrator::newmark:
+    return "implicit Newmark";
+  case fem::TimeIntegrator::generalized_alpha:
+    return "implicit generalized alpha";
+  }
+  return "?";
+}
+} // namespace
+
+HybridStepper::HybridStepper(const deck::RunParameters& parameters, const MPI_Comm communicator)
+    : solver(coupling::decompose(parameters.scene, parameters.hybrid, parameters.far_field),
+             communicator),
+      projectile(projectile_start(solver.mpm())),
+      initial_energy(hybrid_scene_energy(solver, solver.mpm().diagnostics(),
+                                         solver.fe().diagnostics()))
+{
+}
+
+void HybridStepper::log_scene(io::RunDirectory& directory) const
+{
+  const coupling::HybridScene& split = solver.scene();
+  const std::size_t n_points = solver.mpm().n_points_all_ranks();
+  std::ostringstream o;
+  o << "hybrid scene: MPM zone (" << split.hybrid.zone_min[0] << ", " << split.hybrid.zone_min[1]
+    << ", " << split.hybrid.zone_min[2] << ") to (" << split.hybrid.zone_max[0] << ", "
+    << split.hybrid.zone_max[1] << ", " << split.hybrid.zone_max[2] << ") m: "
+    << n_points << " points; FE far field: " << solver.fe().n_active_cells()
+    << " cells, " << solver.fe().n_dofs() << " dofs, " << integrator_name(split.fe.integrator)
+    << "; " << solver.n_interface_nodes() << " shared interface nodes, scheme "
+    << scheme_name(split.hybrid.scheme) << ", " << omp_get_max_threads() << " thread(s)";
+  const mpm::RankGroup& ranks = solver.mpm().rank_group();
+  if (ranks.distributed())
+    o << " on each of " << ranks.size() << " MPI ranks (MPM zone in slabs along axis "
+      << solver.mpm().slabs().axis() << ", FE cells by deal.II's partition; "
+      << solver.n_interface_nodes_across_ranks()
+      << " interface nodes have their FE owner and MPM slab on different ranks)";
+  directory.log(o.str());
+}
+
+std::string HybridStepper::progress() const
+{
+  std::ostringstream o;
+  o << "FE step " << solver.ledger().fe_steps << ", interface energy error "
+    << solver.ledger().energy_error() << " J";
+  return o.str();
+}
+
+std::string HybridStepper::blow_up_remedy() const
+{
+  return "a smaller Time/CFL or Far field time step; an inverted or failed FE element means the "
+         "wound reached the far field: enlarge Hybrid/Zone min and Zone max";
+}
+
+std::vector<std::string> HybridStepper::history_columns() const { return hybrid_history_columns(); }
+
+std::vector<double> HybridStepper::history_row() const
+{
+  return hybrid_history_row(solver, initial_energy);
+}
+
+std::vector<std::string> HybridStepper::final_warnings() const
+{
+  std::vector<std::string> warnings;
+  const unsigned long long failed = solver.fe().diagnostics().n_failed_points; // collective
+  if (failed > 0)
+    warnings.push_back("*** " + std::to_string(failed) +
+                       " FE quadrature points failed: the wound reached the far field; enlarge "
+                       "Hybrid/Zone min and Zone max");
+  for (const std::string& w : mpm_final_warnings(solver.mpm()))
+    warnings.push_back(w);
+  return warnings;
+}
+
+nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
+{
+  const mpm::Solver& mpm_side = solver.mpm();
+  analysis::RunTotals totals = run;
+  totals.projectile_initial_speed = projectile.speed;
+  totals.projectile_initial_kinetic_energy = projectile.kinetic_energy;
+  const analysis::WoundSample wound = analysis::collect_wound_sample(mpm_side); // collective
+  const mpm::SceneDiagnostics m = mpm_side.diagnostics();
+  const fem::FeDiagnostics fe = solver.fe().diagnostics();
+  const mpm::RankGroup& ranks = mpm_side.rank_group();
+  totals.mpi_bytes_sent = ranks.sum(ranks.bytes_sent());
+  if (ranks.rank() != 0)
+    return {};
+  nlohmann::json summary = analysis::mpm_summary(mpm_side, totals, wound, m);
+  const double energy = hybrid_scene_energy(solver, m, fe);
+  const coupling::InterfaceLedger& ledger = solver.ledger();
+  const coupling::HybridScene& split = solver.scene();
+  summary["method"] = "hybrid";
+  summary["fe_cells"] = solver.fe().n_active_cells();
+  summary["fe_failed_points"] = fe.n_failed_points;
+  summary["energy"]["initial_J"] = initial_energy;
+  summary["energy"]["kinetic_J"] = m.kinetic_energy + fe.kinetic_energy;
+  summary["energy"]["strain_J"] = m.strain_energy + fe.strain_energy;
+  summary["energy"]["dissipated_J"] =
+    m.dissipated_energy + mpm_side.contact_dissipation() + fe.dissipated_energy;
+  summary["energy"]["balance_error"] =
+    initial_energy > 0 ? (energy - initial_energy) / initial_energy : 0.0;
+  summary["hybrid"] = {{"scheme", scheme_name(split.hybrid.scheme)},
+                       {"fe_integrator", integrator_name(split.fe.integrator)},
+                       {"mpm_steps", ledger.mpm_steps},
+                       {"fe_steps", ledger.fe_steps},
+                       {"interface_nodes", solver.n_interface_nodes()},
+                       {"interface_nodes_across_ranks", solver.n_interface_nodes_across_ranks()},
+                       {"fe_dofs", solver.fe().n_dofs()},
+                       {"interface_mpm_work_J", ledger.mpm_work},
+                       {"interface_fe_work_J", ledger.fe_work},
+                       {"interface_energy_error_J", ledger.energy_error()},
+                       {"mpm_seconds", mpm_side.phase_times().total() - mpm_side.phase_times().coupling},
+                       {"coupling_and_fe_seconds", mpm_side.phase_times().coupling}};
+  return summary;
+}
+
+std::string HybridStepper::final_report(const nlohmann::json& summary) const
+{
+  const mpm::Solver& mpm_side = solver.mpm();
+  const coupling::InterfaceLedger& ledger = solver.ledger();
+  std::ostringstream o;
+  o << std::setprecision(4) << "done: " << mpm_side.step_count() << " MPM steps and "
+    << ledger.fe_steps << " FE steps to t = " << solver.time() << " s in "
+    << summary["wall_seconds"].get<double>() << " s wall (MPM "
+    << summary["hybrid"]["mpm_seconds"].get<double>() << " s, FE and coupling "
+    << mpm_side.phase_times().coupling << " s); energy balance error "
+    << summary["energy"]["balance_error"].get<double>() << ", interface energy error "
+    << ledger.energy_error() << " J; failed points: matrix " << summary["failed"]["matrix"]
+    << ", fiber " << summary["failed"]["fiber"] << ", total " << summary["failed"]["total"];
+  if (mpm_side.projectile() >= 0)
+    o << "; bullet exit velocity " << summary["bullet"]["exit_velocity_m_s"].get<double>() << " m/s";
+  return o.str();
+}
+} // namespace vulnus::simulator

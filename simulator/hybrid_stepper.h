@@ -1,0 +1,43 @@
+// The hybrid stepper: the MPM zone and the FE far field of coupling::HybridSolver. Under
+// mpirun every rank runs it (the zone in slabs, the far field in deal.II's partition).
+#pragma once
+
+#include "coupling/hybrid_solver.h"
+#include "deck/run_parameters.h"
+#include "simulator/mpm_stepper.h"
+#include "simulator/stepper.h"
+
+namespace vulnus::simulator
+{
+class HybridStepper : public Stepper
+{
+public:
+  HybridStepper(const deck::RunParameters& parameters, MPI_Comm communicator);
+
+  const char* method() const override { return "hybrid"; }
+  void log_scene(io::RunDirectory& directory) const override;
+  void advance() override { solver.advance(); }
+  bool finished() const override { return solver.finished(); }
+  double time() const override { return solver.time(); }
+  double end_time() const override { return solver.mpm().scene().end_time; }
+  std::uint64_t step_count() const override { return solver.mpm().step_count(); }
+  double last_time_step() const override { return solver.mpm().last_time_step(); }
+  std::string progress() const override;
+  MPI_Comm communicator() const override { return solver.mpm().rank_group().communicator(); }
+  std::string blow_up_remedy() const override;
+
+  std::vector<std::string> history_columns() const override;
+  std::vector<double> history_row() const override;
+  std::vector<std::string> final_warnings() const override;
+  nlohmann::json summary(const analysis::RunTotals& totals) const override;
+  std::string final_report(const nlohmann::json& summary) const override;
+
+  const mpm::Solver* mpm_side() const override { return &solver.mpm(); }
+  fem::FarFieldSolver* fe_side() override { return &solver.fe(); }
+
+private:
+  coupling::HybridSolver solver;
+  ProjectileStart projectile;
+  double initial_energy; ///< J, of the whole scene at t = 0
+};
+} // namespace vulnus::simulator

@@ -1,0 +1,64 @@
+// Rows of the MPM time history.
+#include "simulator/mpm_history.h"
+
+#include "analysis/mpm_summary.h"
+
+#include <cmath>
+
+namespace vulnus::simulator
+{
+std::vector<std::string> mpm_history_columns()
+{
+  return {"time_s", "dt_s", "step", "kinetic_J", "strain_J", "potential_J", "dissipated_material_J",
+          "dissipated_contact_J", "outflow_J", "energy_balance_error", "momentum_x", "momentum_y",
+          "momentum_z", "intact", "failed_matrix", "failed_fiber", "failed_total",
+          "bullet_position_x", "bullet_position_y", "bullet_position_z", "bullet_velocity_x",
+          "bullet_velocity_y", "bullet_velocity_z", "bullet_contact_force_x",
+          "bullet_contact_force_y", "bullet_contact_force_z", "contact_nodes", "active_nodes",
+          "points"};
+}
+
+std::vector<double> mpm_history_row(const mpm::Solver& solver, const mpm::SceneDiagnostics& d)
+{
+  const double initial = solver.initial_energy();
+  const double balance = initial > 0 ? (analysis::accounted_energy(solver, d) - initial) / initial : 0.0;
+  mpm::Vector3 position = mpm::Vector3::Constant(NAN), velocity = position, force = position;
+  if (solver.projectile() >= 0)
+  {
+    const mpm::BodySummary& b = d.bodies[solver.projectile()];
+    position = b.centroid;
+    velocity = b.velocity;
+    force = solver.contact_forces().empty() ? mpm::Vector3::Zero()
+                                            : solver.contact_forces()[solver.projectile()];
+  }
+  return {solver.time(),
+          solver.last_time_step(),
+          double(solver.step_count()),
+          d.kinetic_energy,
+          d.strain_energy,
+          d.potential_energy,
+          d.dissipated_energy,
+          solver.contact_dissipation(),
+          solver.removed_energy(),
+          balance,
+          d.momentum[0],
+          d.momentum[1],
+          d.momentum[2],
+          double(d.failure_counts[0]),
+          double(d.failure_counts[1]),
+          double(d.failure_counts[2]),
+          double(d.failure_counts[3]),
+          position[0],
+          position[1],
+          position[2],
+          velocity[0],
+          velocity[1],
+          velocity[2],
+          force[0],
+          force[1],
+          force[2],
+          double(solver.contact_nodes()),
+          double(solver.active_nodes_all_ranks()),
+          double(solver.n_points_all_ranks())};
+}
+} // namespace vulnus::simulator

@@ -1,0 +1,158 @@
+// The pure-MPM stepper: scene log, history rows, summary and closing line.
+#include "simulator/mpm_stepper.h"
+
+#include "analysis/wound_sample.h"
+#include "io/run_directory.h"
+#include "simulator/mpm_history.h"
+
+#include <omp.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace vulnus::simulator
+{
+ProjectileStart projectile_start(const mpm::Solver& solver)
+{
+  const mpm::SceneDiagnostics initial = solver.diagnostics(); // collective
+  if (solver.projectile() < 0)
+    return {};
+  const mpm::BodySummary& b = initial.bodies[solver.projectile()];
+  return {b.velocity.dot(solver.flight_direction()), b.kinetic_energy};
+}
+
+std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver)
+{
+  std::vector<std::string> warnings;
+  if (solver.projectile() >= 0 && !solver.body_material(solver.projectile()).is_rigid())
+  {
+    const double ratio = solver.peak_von_mises_over_yield()[solver.projectile()];
+    if (ratio > 0.0 && ratio < 0.5)
+      warnings.push_back("the projectile stayed far below yield (max von Mises / yield = " +
+                         std::to_string(ratio) +
+                         "): a rigid projectile (Model = rigid) gives the same wound at a "
+                         "much larger time step");
+  }
+  if (solver.removed_points() > 0)
+    warnings.push_back(std::to_string(solver.removed_points()) +
+                       " points left the grid and were removed; their energy is booked "
+                       "as outflow");
+  return warnings;
+}
+
+MpmStepper::MpmStepper(const deck::RunParameters& parameters, const MPI_Comm communicator)
+    : solver(parameters.scene, communicator), n_points_at_start(solver.n_points_all_ranks()),
+      projectile(projectile_start(solver))
+{
+}
+
+void MpmStepper::log_scene(io::RunDirectory& directory) const
+{
+  const mpm::SceneParameters& scene = solver.scene();
+  const mpm::Particles& p = solver.points();
+  std::vector<std::uint64_t> body_points(p.n_bodies());
+  for (std::size_t b = 0; b < p.n_bodies(); ++b)
+    body_points[b] = p.end_of(b) - p.begin_of(b);
+  solver.rank_group().sum(body_points.data(), static_cast<int>(body_points.size()));
+  std::ostringstream o;
+  o << "MPM scene: " << solver.n_points_all_ranks() << " points, cell size " << scene.cell_size << " m, grid "
+    << solver.background_grid().cells()[0] << " x " << solver.background_grid().cells()[1]
+    << " x " << solver.background_grid().cells()[2] << " cells, "
+    << (scene.shape_function == mpm::ShapeFunction::linear ? "linear" : "GIMP")
+    << " shape functions, " << (scene.update_scheme == mpm::UpdateScheme::musl ? "MUSL" : "USL")
+    << ", " << omp_get_max_threads() << " thread(s)";
+  if (solver.rank_group().distributed())
+  {
+    o << " on each of " << solver.rank_group().size() << " ranks; slabs along axis "
+      << solver.slabs().axis() << " from cell layers";
+    for (int r = 1; r < solver.rank_group().size(); ++r)
+      o << ' ' << solver.slabs().first_layers()[r];
+    o << ", re-cut to balance the points every " << scene.sort_interval << " steps";
+  }
+  directory.log(o.str());
+  for (std::size_t b = 0; b < p.n_bodies(); ++b)
+  {
+    const mpm::BodyParameters& body = scene.bodies[b];
+    const materials::Material& m = solver.body_material(b);
+    std::ostringstream line;
+    line << "  body " << body.name << ": " << body_points[b] << " points, material "
+         << body.material << " (" << m.model_name() << ")";
+    if (m.is_rigid())
+      line << ", rigid: no stress update, no time-step limit";
+    else if (m.model_name().find("hyperelastic") != std::string::npos)
+    {
+      const bool failure_on =
+        mpm::find_material(scene, body.material)->parameters.tissue.failure.enabled;
+      line << (m.uses_fibers() ? "" : ", no fiber work")
+           << (failure_on ? ", failed tissue keeps its pressure in compression"
+                          : ", failure off: no eigenvalues");
+    }
+    directory.log(line.str());
+  }
+  std::ostringstream contact;
+  contact << "  contact: ";
+  if (solver.uses_contact() && scene.contact.enabled)
+    contact << "multi-velocity field at nodes shared by bodies, friction "
+            << scene.contact.friction_coefficient;
+  else if (solver.uses_contact())
+    contact << "disabled: the bodies share one velocity field (no-slip)";
+  else
+    contact << "none (one body): no contact pass";
+  directory.log(contact.str());
+}
+
+std::string MpmStepper::progress() const
+{
+  return std::to_string(n_points_at_start - solver.removed_points()) + " points";
+}
+
+std::string MpmStepper::blow_up_remedy() const
+{
+  return "a smaller Time/CFL (restart from the last checkpoint with it), or a finer Grid/Cell "
+         "size where points move more than a cell per step";
+}
+
+std::vector<std::string> MpmStepper::history_columns() const { return mpm_history_columns(); }
+
+std::vector<double> MpmStepper::history_row() const
+{
+  return mpm_history_row(solver, solver.diagnostics());
+}
+
+std::vector<std::string> MpmStepper::final_warnings() const { return mpm_final_warnings(solver); }
+
+nlohmann::json MpmStepper::summary(const analysis::RunTotals& run) const
+{
+  analysis::RunTotals totals = run;
+  totals.projectile_initial_speed = projectile.speed;
+  totals.projectile_initial_kinetic_energy = projectile.kinetic_energy;
+  const analysis::WoundSample wound = analysis::collect_wound_sample(solver); // collective
+  const mpm::SceneDiagnostics final_state = solver.diagnostics();
+  const mpm::RankGroup& ranks = solver.rank_group();
+  totals.mpi_bytes_sent = ranks.sum(ranks.bytes_sent());
+  if (ranks.rank() != 0)
+    return {};
+  nlohmann::json j = analysis::mpm_summary(solver, totals, wound, final_state);
+  j["method"] = "MPM";
+  return j;
+}
+
+std::string MpmStepper::final_report(const nlohmann::json& summary) const
+{
+  const mpm::PhaseTimes& t = solver.phase_times();
+  std::ostringstream o;
+  o << std::setprecision(4) << "done: " << solver.step_count() << " steps to t = " << solver.time()
+    << " s in " << summary["wall_seconds"].get<double>() << " s wall, "
+    << summary["particle_steps_per_second"].get<double>() << " point-steps/s; phases (s): "
+    << "time step " << t.time_step << ", particle-to-grid " << t.particle_to_grid
+    << ", grid update " << t.grid_update << ", contact " << t.contact << ", grid-to-particle "
+    << t.grid_to_particle << ", stress " << t.stress_update << ", checks " << t.checks_and_sorting
+    << "\n";
+  o << "energy balance error " << summary["energy"]["balance_error"].get<double>()
+    << "; failed points: matrix " << summary["failed"]["matrix"] << ", fiber "
+    << summary["failed"]["fiber"] << ", total " << summary["failed"]["total"];
+  if (solver.projectile() >= 0)
+    o << "; bullet exit velocity " << summary["bullet"]["exit_velocity_m_s"].get<double>() << " m/s";
+  return o.str();
+}
+} // namespace vulnus::simulator

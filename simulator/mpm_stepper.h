@@ -1,0 +1,58 @@
+// The pure-MPM stepper: one mpm::Solver over all bodies, on one process or in slabs over
+// the ranks of a communicator. Writes checkpoints.
+#pragma once
+
+#include "deck/run_parameters.h"
+#include "mpm/solver.h"
+#include "simulator/stepper.h"
+
+namespace vulnus::simulator
+{
+/// What summary.json reports about the projectile against its initial state.
+struct ProjectileStart
+{
+  double speed = 0.0;          ///< m/s along the flight direction
+  double kinetic_energy = 0.0; ///< J
+};
+
+/// The projectile's initial speed and kinetic energy (zeros without a projectile). Collective.
+ProjectileStart projectile_start(const mpm::Solver& solver);
+
+/// The MPM-side warnings of a finished run: a projectile far below yield, points removed.
+std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver);
+
+class MpmStepper : public Stepper
+{
+public:
+  MpmStepper(const deck::RunParameters& parameters, MPI_Comm communicator);
+
+  const char* method() const override { return "MPM"; }
+  void log_scene(io::RunDirectory& directory) const override;
+  void advance() override { solver.advance(); }
+  bool finished() const override { return solver.finished(); }
+  double time() const override { return solver.time(); }
+  double end_time() const override { return solver.scene().end_time; }
+  std::uint64_t step_count() const override { return solver.step_count(); }
+  double last_time_step() const override { return solver.last_time_step(); }
+  std::string progress() const override;
+  MPI_Comm communicator() const override { return solver.rank_group().communicator(); }
+  std::string blow_up_remedy() const override;
+
+  std::vector<std::string> history_columns() const override;
+  std::vector<double> history_row() const override;
+  std::vector<std::string> final_warnings() const override;
+  nlohmann::json summary(const analysis::RunTotals& totals) const override;
+  std::string final_report(const nlohmann::json& summary) const override;
+
+  const mpm::Solver* mpm_side() const override { return &solver; }
+
+  bool can_checkpoint() const override { return true; }
+  void save(std::ostream& out) const override { solver.save(out); }
+  void restore(std::istream& in) override { solver.restore(in); }
+
+private:
+  mpm::Solver solver;
+  std::size_t n_points_at_start;
+  ProjectileStart projectile; ///< from the initial state, before any restart
+};
+} // namespace vulnus::simulator

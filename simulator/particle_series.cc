@@ -1,0 +1,59 @@
+// Particle outputs on the schedule; their records travel with the checkpoints.
+#include "simulator/particle_series.h"
+
+#include "simulator/mpm_snapshot.h"
+
+#include <sstream>
+
+namespace vulnus::simulator
+{
+ParticleSeries::ParticleSeries(const std::string& directory, const double interval,
+                               const double end_time, const MPI_Comm communicator)
+    : output(directory, "particles", communicator), schedule(interval, end_time)
+{
+}
+
+void ParticleSeries::write(const Stepper& stepper)
+{
+  output.write(stepper.time(), mpm_snapshot(*stepper.mpm_side()));
+}
+
+void ParticleSeries::start(Stepper& stepper) { write(stepper); }
+
+void ParticleSeries::resume(Stepper&, const io::RunProgress& progress)
+{
+  std::istringstream records(progress.output_records);
+  output.restore_records(records);
+  schedule.set_next_time(progress.next_output);
+}
+
+void ParticleSeries::after_step(Stepper& stepper)
+{
+  if (schedule.due(stepper.time()))
+  {
+    write(stepper);
+    schedule.advance();
+  }
+}
+
+void ParticleSeries::finish(Stepper& stepper)
+{
+  if (!output.has_output_at(stepper.time()))
+    write(stepper);
+}
+
+void ParticleSeries::save_progress(io::RunProgress& progress) const
+{
+  progress.next_output = schedule.next_time();
+  std::ostringstream records;
+  output.save_records(records);
+  progress.output_records = records.str();
+}
+
+std::string ParticleSeries::last_state() const
+{
+  std::ostringstream o;
+  o << "the last particle output (t = " << output.last_time() << " s) in " << output.xdmf_path();
+  return o.str();
+}
+} // namespace vulnus::simulator

@@ -1,0 +1,189 @@
+// The time loop: start or restart, step, record, stop on signals or failures, summarise.
+#include "simulator/simulator.h"
+
+#include "mpm/rank_group.h"
+#include "mpm/solver.h"
+#include "io/summary_json.h"
+#include "simulator/checkpointer.h"
+#include "simulator/failure_report.h"
+#include "simulator/history_writer.h"
+#include "simulator/mesh_series.h"
+#include "simulator/particle_series.h"
+#include "simulator/stop_signals.h"
+
+#include <chrono>
+#include <iomanip>
+#include <memory>
+#include <sstream>
+
+namespace vulnus::simulator
+{
+namespace
+{
+std::string format_seconds(const double s)
+{
+  std::ostringstream o;
+  if (s < 120)
+    o << std::fixed << std::setprecision(0) << s << " s";
+  else
+    o << std::fixed << std::setprecision(1) << s / 60 << " min";
+  return o.str();
+}
+
+std::vector<std::unique_ptr<Postprocessor>> postprocessors_of(Stepper& stepper,
+                                                              const deck::RunParameters& parameters,
+                                                              io::RunDirectory& directory)
+{
+  std::vector<std::unique_ptr<Postprocessor>> list;
+  list.push_back(std::make_unique<HistoryWriter>(directory, parameters.output.history_interval));
+  const double end = stepper.end_time();
+  if (stepper.mpm_side() != nullptr)
+    list.push_back(std::make_unique<ParticleSeries>(
+      directory.path(), parameters.output.particle_interval, end, stepper.communicator()));
+  if (stepper.fe_side() != nullptr)
+    list.push_back(
+      std::make_unique<MeshSeries>(directory.path(), parameters.output.particle_interval, end));
+  return list;
+}
+
+/// benchmarks/README.md, stability: the paper scene's energy balance error passes 5 % from
+/// CFL 0.6 with the elastic-plastic bullet (1.3 % at the default 0.4).
+void warn_about_cfl(const Stepper& stepper, const deck::RunParameters& parameters,
+                    std::vector<std::string>& warnings)
+{
+  constexpr double largest_tested_cfl = 0.5;
+  if (stepper.mpm_side() == nullptr || parameters.scene.cfl <= largest_tested_cfl)
+    return;
+  std::ostringstream message;
+  message << "Time/CFL = " << parameters.scene.cfl << " is above " << largest_tested_cfl
+          << ": in the stability sweep (benchmarks/README.md) the paper scene gains more than "
+             "5 % energy from CFL 0.6 on; check energy.balance_error or use 0.4";
+  warnings.push_back(message.str());
+}
+
+class WallClock
+{
+public:
+  double seconds() const
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+private:
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+};
+} // namespace
+
+int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDirectory& directory)
+{
+  install_stop_signal_handlers();
+  const WallClock wall;
+  const mpm::RankGroup ranks(stepper.communicator());
+  stepper.log_scene(directory);
+
+  analysis::RunTotals totals;
+  warn_about_cfl(stepper, parameters, totals.warnings);
+  for (const std::string& w : totals.warnings)
+    directory.warn(w);
+
+  const std::vector<std::unique_ptr<Postprocessor>> postprocessors =
+    postprocessors_of(stepper, parameters, directory);
+  Checkpointer checkpoints(parameters, directory, ranks);
+  if (parameters.output.restart)
+    checkpoints.restart(stepper, postprocessors);
+  else
+    for (const auto& p : postprocessors)
+      p->start(stepper);
+  if (stepper.can_checkpoint())
+    checkpoints.log_policy();
+  else
+    directory.log(std::string("checkpoints: none (") + stepper.method() +
+                  " runs cannot write them yet); a stop signal ends the run with its records");
+
+  auto last_good_state = [&] {
+    std::string where = checkpoints.last_state();
+    for (const auto& p : postprocessors)
+      if (const std::string s = p->last_state(); !s.empty())
+        where += (where.empty() ? "" : " and ") + s;
+    return where;
+  };
+
+  double last_progress = 0.0;
+  int stop_signal = 0;
+  while (!stepper.finished())
+  {
+    // Ranks may see a signal at different steps: stop together on the first one seen.
+    if ((stop_signal = static_cast<int>(ranks.max(pending_stop_signal()))) != 0)
+      break;
+    try
+    {
+      stepper.advance();
+    }
+    catch (const std::exception& e)
+    {
+      const FailureReport report = describe_failure(e);
+      std::ostringstream o;
+      o << report.kind << " at step " << stepper.step_count() << " (t = " << stepper.time()
+        << " s): " << report.message;
+      totals.completed = false;
+      totals.error = o.str();
+      directory.warn(o.str());
+      directory.warn("likely remedy: " + stepper.blow_up_remedy());
+      directory.warn("the last good state is " + last_good_state());
+      break;
+    }
+    for (const auto& p : postprocessors)
+      p->after_step(stepper);
+    const double seconds = ranks.max(wall.seconds()); // the same on every rank
+    if (checkpoints.due(stepper, seconds))
+      directory.log("checkpoint: " + checkpoints.write(stepper, postprocessors, seconds));
+    if (seconds - last_progress >= 5.0)
+    {
+      last_progress = seconds;
+      const double rate = stepper.time() / seconds; // simulated seconds per wall second
+      std::ostringstream o;
+      o << "t = " << std::scientific << std::setprecision(3) << stepper.time() << " s, step "
+        << stepper.step_count() << ", dt = " << stepper.last_time_step() << " s, "
+        << stepper.progress() << ", time left <= "
+        << format_seconds((stepper.end_time() - stepper.time()) / rate);
+      directory.log(o.str());
+    }
+  }
+
+  if (stop_signal != 0)
+  {
+    std::ostringstream o;
+    o << "stopped by " << stop_signal_name(stop_signal) << " at step " << stepper.step_count();
+    if (stepper.can_checkpoint())
+    {
+      directory.warn(o.str() + "; checkpoint " +
+                     checkpoints.write(stepper, postprocessors, ranks.max(wall.seconds())) +
+                     "; continue with `vulnus run DECK --restart " + directory.path() + "`");
+      return 128 + stop_signal;
+    }
+    totals.completed = false;
+    totals.error = o.str() + " (no checkpoint: " + stepper.method() + " runs cannot write one yet)";
+    directory.warn(totals.error);
+  }
+  for (const auto& p : postprocessors)
+    if (totals.completed)
+      p->finish(stepper);
+    else
+      p->flush();
+  totals.wall_seconds = checkpoints.earlier_wall_seconds() + wall.seconds();
+
+  for (const std::string& w : stepper.final_warnings())
+  {
+    directory.warn(w);
+    totals.warnings.push_back(w);
+  }
+  nlohmann::json summary = stepper.summary(totals); // collective
+  const int status = stop_signal != 0 ? 128 + stop_signal : totals.completed ? 0 : 1;
+  if (!directory.writes_files())
+    return status;
+  summary["warnings"] = totals.warnings;
+  io::write_summary_json(directory.file("summary.json"), summary);
+  directory.log(stepper.final_report(summary));
+  return status;
+}
+} // namespace vulnus::simulator

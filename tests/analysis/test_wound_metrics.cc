@@ -1,0 +1,114 @@
+// Wound metrics on synthetic point sets with known answers: a circular cylinder of failed
+// points (its diameter, aspect ratio 1), an elliptic cylinder (its axes ratio), a cone (area
+// growing with depth), and volumes by failure type.
+#include "analysis/wound_metrics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+using namespace vulnus::analysis;
+
+namespace
+{
+struct PointSet
+{
+  std::vector<Vector3> x;
+  std::vector<double> volume;
+  std::vector<std::uint8_t> flags;
+};
+
+/// A 40 x 10 x 40 mm slab (y through the thickness) of points at spacing s; flag(x) decides.
+PointSet slab(const double s, const std::function<std::uint8_t(const Vector3&)>& flag)
+{
+  PointSet set;
+  for (double z = -20e-3 + s / 2; z < 20e-3; z += s)
+    for (double y = s / 2; y < 10e-3; y += s)
+      for (double x = -20e-3 + s / 2; x < 20e-3; x += s)
+      {
+        const Vector3 p(x, y, z);
+        set.x.push_back(p);
+        set.volume.push_back(s * s * s);
+        set.flags.push_back(flag(p));
+      }
+  return set;
+}
+} // namespace
+
+TEST(WoundMetrics, CircularCylinderGivesItsDiameterAndAspectRatioOne)
+{
+  const double radius = 4.5e-3, s = 0.25e-3;
+  const PointSet set = slab(s, [&](const Vector3& p) {
+    return std::uint8_t(p[0] * p[0] + p[2] * p[2] < radius * radius ? 3 : 0);
+  });
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, Vector3::UnitY(), 0.0, 10e-3, 1e-3);
+  // Staircase of a circle on a 0.25 mm lattice: area error ~ perimeter * s / 2 / area ~ 3%,
+  // half that in the diameter.
+  EXPECT_NEAR(m.entrance.equivalent_diameter, 2 * radius, 0.02 * 2 * radius);
+  EXPECT_NEAR(m.exit.equivalent_diameter, 2 * radius, 0.02 * 2 * radius);
+  EXPECT_NEAR(m.entrance.aspect_ratio, 1.0, 0.01);
+  EXPECT_NEAR(m.exit.aspect_ratio, 1.0, 0.01);
+  for (const double area : m.tract_area)
+    EXPECT_NEAR(area, M_PI * radius * radius, 0.03 * M_PI * radius * radius);
+  EXPECT_EQ(m.tract_area.size(), 10u);
+}
+
+TEST(WoundMetrics, EllipticCylinderGivesItsAxesRatio)
+{
+  const double a = 6e-3, b = 3e-3, s = 0.25e-3; // semi-axes along x and z
+  const PointSet set = slab(s, [&](const Vector3& p) {
+    return std::uint8_t((p[0] / a) * (p[0] / a) + (p[2] / b) * (p[2] / b) < 1.0 ? 3 : 0);
+  });
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, Vector3::UnitY(), 0.0, 10e-3, 1e-3);
+  // Second moments of an elliptic disc: a^2/4 and b^2/4, so the ratio of axes is a / b.
+  EXPECT_NEAR(m.exit.aspect_ratio, a / b, 0.03 * a / b);
+  EXPECT_NEAR(std::abs(m.exit.major_axis[0]), 1.0, 1e-6);
+  EXPECT_NEAR(m.exit.equivalent_diameter, 2 * std::sqrt(a * b), 0.02 * 2 * std::sqrt(a * b));
+}
+
+TEST(WoundMetrics, ConeAreaGrowsWithDepth)
+{
+  const double s = 0.25e-3;
+  auto radius_at = [](const double depth) { return 2e-3 + 0.4 * depth; }; // 2 mm -> 6 mm
+  const PointSet set = slab(s, [&](const Vector3& p) {
+    const double r = radius_at(p[1]);
+    return std::uint8_t(p[0] * p[0] + p[2] * p[2] < r * r ? 3 : 0);
+  });
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, Vector3::UnitY(), 0.0, 10e-3, 1e-3);
+  ASSERT_EQ(m.tract_area.size(), 10u);
+  for (std::size_t k = 0; k < m.tract_area.size(); ++k)
+  {
+    // Mean of pi r(y)^2 over the slice, r linear in y.
+    const double y0 = k * 1e-3, y1 = y0 + 1e-3;
+    const double r0 = radius_at(y0), r1 = radius_at(y1);
+    const double expected = M_PI * (r0 * r0 + r0 * r1 + r1 * r1) / 3.0;
+    EXPECT_NEAR(m.tract_area[k], expected, 0.05 * expected) << "slice " << k;
+    if (k > 0)
+    {
+      EXPECT_GT(m.tract_area[k], m.tract_area[k - 1]);
+    }
+  }
+  EXPECT_LT(m.entrance.equivalent_diameter, m.exit.equivalent_diameter);
+}
+
+TEST(WoundMetrics, VolumesAndCountsByFailureType)
+{
+  PointSet set;
+  const std::uint8_t flags[] = {0, 1, 1, 2, 3, 3, 3};
+  for (std::size_t i = 0; i < 7; ++i)
+  {
+    set.x.push_back(Vector3(0, 5e-3, 0));
+    set.volume.push_back(1e-9 * (i + 1));
+    set.flags.push_back(flags[i]);
+  }
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, Vector3::UnitY(), 0.0, 10e-3, 1e-3);
+  EXPECT_EQ(m.counts[0], 1u);
+  EXPECT_EQ(m.counts[1], 2u);
+  EXPECT_EQ(m.counts[2], 1u);
+  EXPECT_EQ(m.counts[3], 3u);
+  EXPECT_NEAR(m.volumes[1], 5e-9, 1e-20);
+  EXPECT_NEAR(m.volumes[3], 18e-9, 1e-20);
+  EXPECT_EQ(m.entrance.n_points, 0u); // depth 5 mm: in neither face layer
+  EXPECT_EQ(m.exit.n_points, 0u);
+}
