@@ -13,6 +13,14 @@ void declare_contact_section(EntryTable& table)
   table.declare("Friction coefficient", "0.08", Patterns::Double(-1.0, 10.0),
                 "Coulomb friction coefficient mu [-] (the paper: 0.08; 0: frictionless); a "
                 "negative value means no-slip.");
+  table.declare("Proximity distance", "0.8", Patterns::Double(0.0, 2.0),
+                "Contact proximity check, in cell sizes [-]: two bodies interact at a node only "
+                "when the distance along the contact normal between their mass centres seen "
+                "from that node, after the step's approach, is at most this (the correction "
+                "fades in over +-0.05 cells around it). 0 switches the "
+                "check off (contact wherever both bodies reach a node and approach, up to a "
+                "cell before their surfaces meet). Touching half-spaces under linear weights "
+                "sit 2/3 of a cell apart.");
   table.leave();
 }
 
@@ -21,6 +29,7 @@ void parse_contact_section(dealii::ParameterHandler& prm, mpm::ContactParameters
   prm.enter_subsection("Contact");
   contact.enabled = prm.get_bool("Enabled");
   contact.friction_coefficient = prm.get_double("Friction coefficient");
+  contact.proximity_distance = prm.get_double("Proximity distance");
   prm.leave_subsection();
 }
 } // namespace vulnus::deck

@@ -1,5 +1,5 @@
 // Per active node and per body: the fields the transfers accumulate (mass, momentum, internal
-// force, mass gradient for contact normals) and the velocities the grid update produces.
+// force, mass gradient and mass centre for contact) and the velocities the grid update produces.
 // Entry of node slot s and body b is s * n_bodies + b.
 #pragma once
 
@@ -17,6 +17,9 @@ struct NodeBodyData
   Vector3 momentum = Vector3::Zero();
   Vector3 force = Vector3::Zero();
   Vector3 mass_gradient = Vector3::Zero();
+  /// sum_p m_p N_i(x_p) x_p: over the mass, the body's mass centre seen from the node (the
+  /// contact proximity check); accumulated with the normals only.
+  Vector3 mass_position = Vector3::Zero();
 
   NodeBodyData& operator+=(const NodeBodyData& other)
   {
@@ -24,6 +27,7 @@ struct NodeBodyData
     momentum += other.momentum;
     force += other.force;
     mass_gradient += other.mass_gradient;
+    mass_position += other.mass_position;
     return *this;
   }
 };

@@ -3,6 +3,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace vulnus::mpm
@@ -75,8 +76,28 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Ve
       pair_normal = g / norm; // outward normal of the first body
   }
 
-  double dissipated = 0.0;
   const double dt = s.time_step;
+  // Share of the contact correction applied: 1 for bodies in contact, 0 for bodies apart.
+  double engagement = 1.0;
+  if (pair && s.contact_distance > 0.0 && s.friction_coefficient >= 0.0 &&
+      pair_normal.squaredNorm() > 0.0)
+  {
+    // Mass centres of the two bodies seen from this node, and their separation along the
+    // first body's outward normal at the end of the step if nothing acted between them.
+    // The correction fades in linearly over a band around the contact distance, so that
+    // round-off in the separation changes the result by round-off, not by a whole impulse.
+    const NodeBodyData &first = data[present[0]], &second = data[present[1]];
+    const Vector3 separation =
+      second.mass_position / second.mass - first.mass_position / first.mass;
+    const double closing = (v[present[0]] - v[present[1]]).dot(pair_normal);
+    const double gap = separation.dot(pair_normal) - dt * closing;
+    const double band = s.contact_band;
+    engagement = std::clamp((s.contact_distance + band - gap) / (2.0 * band), 0.0, 1.0);
+    if (engagement == 0.0)
+      return 0.0; // apart: each body keeps its own velocity
+  }
+
+  double dissipated = 0.0;
   for (std::size_t b = 0; b < n_bodies; ++b)
   {
     const double m = data[b].mass;
@@ -107,6 +128,7 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Ve
       else
         v[b] -= approach * normal + friction_limit * (tangential / slip);
     }
+    v[b] = before + engagement * (v[b] - before);
     const Vector3 force = m * (v[b] - before) / dt;
     contact_force_local[b] += force;
     if (rigid >= 0)

@@ -23,6 +23,13 @@ struct GridUpdateSettings
   std::vector<char> body_is_rigid;     ///< per body
   std::vector<Vector3> rigid_velocity; ///< per body, used when rigid
   double mass_tolerance = 0.0;         ///< node-body entries lighter than this are ignored
+  /// Proximity check of contact (m; 0: off): two bodies at a node interact only when the
+  /// distance along the normal between their mass centres there, after this step's approach,
+  /// is at most this. Without it contact acts wherever both bodies have mass, up to a cell
+  /// before their surfaces meet.
+  double contact_distance = 0.0;
+  /// Half-width (m) of the band around contact_distance over which the correction fades in.
+  double contact_band = 0.0;
   /// When set (distributed runs), contact sums count only the nodes this rank owns.
   std::function<bool(std::int64_t)> owns_node;
 };

@@ -71,7 +71,10 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
       node.momentum += w * momentum;
       node.force -= volume_stress * grad_w;
       if constexpr (with_normals)
+      {
         node.mass_gradient += m * grad_w;
+        node.mass_position += (w * m) * particles.position[p];
+      }
     };
     // The node offset is computed only for APIC's affine momentum.
     if constexpr (affine)

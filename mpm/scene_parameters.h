@@ -110,6 +110,9 @@ struct ContactParameters
   /// of the transfers that need independent bodies.
   bool ignore_other_bodies = false;
   double friction_coefficient = 0.08; ///< Coulomb; negative means no-slip (single velocity field)
+  /// Proximity check, in cell sizes (0: off): bodies interact at a node only when their mass
+  /// centres there are at most this far apart along the normal after the step's approach.
+  double proximity_distance = 0.8;
 };
 
 struct SceneParameters

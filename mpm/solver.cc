@@ -67,6 +67,8 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   grid_settings.gravity = scene.gravity;
   grid_settings.contact = contact_active;
   grid_settings.friction_coefficient = friction;
+  grid_settings.contact_distance = scene.contact.proximity_distance * scene.cell_size;
+  grid_settings.contact_band = 0.05 * scene.cell_size;
   // Any node with mass gets a velocity: p / m is a weighted mean of point velocities even
   // where m is tiny, and zeroing light nodes breaks exact translation.
   grid_settings.mass_tolerance = 0.0;
