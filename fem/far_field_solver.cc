@@ -87,16 +87,13 @@ struct DirichletCandidate
   int priority = 0;
   DirichletDof dof{};
 };
-} // namespace
 
-void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modify_mesh)
+using Data = FarFieldSolver::Data;
+using NodeOfDof = std::unordered_map<types::global_dof_index, unsigned int>;
+
+/// Dofs, the owned and relevant index sets, and the hanging-node constraints.
+void distribute_dofs(Data& d)
 {
-  Data& d = *data;
-  const FeSceneParameters& prm = d.prm;
-  build_slab_mesh(prm, d.triangulation);
-  if (modify_mesh)
-    modify_mesh(d.triangulation);
-
   d.dof_handler.distribute_dofs(d.fe);
   d.owned_dofs = d.dof_handler.locally_owned_dofs();
   d.relevant_dofs = DoFTools::extract_locally_relevant_dofs(d.dof_handler);
@@ -104,13 +101,14 @@ void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modi
   d.hanging_constraints.reinit(d.relevant_dofs);
   DoFTools::make_hanging_node_constraints(d.dof_handler, d.hanging_constraints);
   d.hanging_constraints.close();
+}
 
-  const unsigned int dofs_per_cell = d.fe.n_dofs_per_cell();
-  const unsigned int dofs_per_face = d.fe.n_dofs_per_face();
+/// Nodes owned by this rank (every owned dof lies on an owned cell); returns the node of
+/// each of their dofs.
+NodeOfDof collect_owned_nodes(Data& d)
+{
+  std::vector<types::global_dof_index> dofs(d.fe.n_dofs_per_cell());
   const std::vector<Point<3>>& unit_points = d.fe.base_element(0).get_unit_support_points();
-  std::vector<types::global_dof_index> dofs(dofs_per_cell), face_dof_indices(dofs_per_face);
-
-  // Nodes owned by this rank (every owned dof lies on an owned cell).
   d.owned_nodes.clear();
   std::unordered_map<types::global_dof_index, unsigned int> node_of_dof;
   for (const auto& cell : d.dof_handler.active_cell_iterators())
@@ -131,7 +129,16 @@ void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modi
       }
     }
 
-  // Face dofs and Dirichlet conditions on the locally relevant dofs.
+  return node_of_dof;
+}
+
+/// The dofs of every boundary face (owned ones, by face) and the Dirichlet condition that wins
+/// on each locally relevant dof.
+std::map<types::global_dof_index, DirichletCandidate> collect_face_dofs_and_supports(Data& d)
+{
+  const FeSceneParameters& prm = d.prm;
+  const unsigned int dofs_per_face = d.fe.n_dofs_per_face();
+  std::vector<types::global_dof_index> face_dof_indices(dofs_per_face);
   std::map<types::global_dof_index, DirichletCandidate> candidates;
   for (auto& list : d.face_dofs)
     list.clear();
@@ -195,7 +202,12 @@ void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modi
           }
         }
 
-  // Interface nodes: owned nodes on the hole surface.
+  return candidates;
+}
+
+/// Owned nodes on the hole surface; returns the interface index of each of their dofs.
+NodeOfDof collect_interface_nodes(Data& d, const NodeOfDof& node_of_dof)
+{
   d.interface_nodes.clear();
   std::unordered_map<types::global_dof_index, unsigned int> interface_index_of_dof;
   for (const auto& [dof, component] : d.face_dofs[boundary_ids::interface])
@@ -209,6 +221,15 @@ void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modi
   d.interface_velocity_targets.assign(d.interface_nodes.size(), Tensor<1, 3>());
   d.interface_forces.assign(d.interface_nodes.size(), Tensor<1, 3>());
 
+  return interface_index_of_dof;
+}
+
+/// The constraints of the increments (hanging nodes and every Dirichlet dof) and the list of
+/// owned Dirichlet dofs with their sources.
+void build_dirichlet_constraints(Data& d,
+                                 std::map<types::global_dof_index, DirichletCandidate>& candidates,
+                                 const NodeOfDof& node_of_dof, const NodeOfDof& interface_index_of_dof)
+{
   d.increment_constraints.clear();
   d.increment_constraints.reinit(d.relevant_dofs);
   d.increment_constraints.merge(d.hanging_constraints);
@@ -225,15 +246,25 @@ void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modi
     d.dirichlet_dofs.push_back(entry);
   }
   d.increment_constraints.close();
+}
 
-  // Vectors.
+/// The solution and work vectors on the owned (and relevant) dofs.
+void allocate_vectors(Data& d)
+{
   for (Data::Vector* v :
        {&d.displacement, &d.velocity, &d.acceleration, &d.lumped_mass, &d.inverse_mass,
         &d.internal_force_raw, &d.external_force_raw, &d.residual})
     v->reinit(d.owned_dofs, d.comm);
   d.ghosted.reinit(d.owned_dofs, d.relevant_dofs, d.comm);
+}
 
-  // Quadrature-point history, fibers, cell sizes, lumped (row-sum) mass m_i = int rho0 N_i.
+/// Quadrature-point history, fibers, cell sizes, lumped (row-sum) mass m_i = int rho0 N_i and
+/// its inverse (zero on constrained and Dirichlet dofs).
+void build_point_history_and_lumped_mass(Data& d)
+{
+  const FeSceneParameters& prm = d.prm;
+  const unsigned int dofs_per_cell = d.fe.n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(dofs_per_cell);
   d.n_q_points = d.quadrature.size();
   const unsigned int n_cells = d.triangulation.n_active_cells();
   d.committed_states.assign(std::size_t(n_cells) * d.n_q_points, materials::PointState());
@@ -278,6 +309,22 @@ void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modi
   for (const DirichletDof& dirichlet : d.dirichlet_dofs)
     d.inverse_mass(dirichlet.dof) = 0.0;
   d.inverse_mass.compress(VectorOperation::insert);
+}
+} // namespace
+
+void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modify_mesh)
+{
+  Data& d = *data;
+  build_slab_mesh(d.prm, d.triangulation);
+  if (modify_mesh)
+    modify_mesh(d.triangulation);
+  distribute_dofs(d);
+  const NodeOfDof node_of_dof = collect_owned_nodes(d);
+  std::map<types::global_dof_index, DirichletCandidate> candidates = collect_face_dofs_and_supports(d);
+  const NodeOfDof interface_index_of_dof = collect_interface_nodes(d, node_of_dof);
+  build_dirichlet_constraints(d, candidates, node_of_dof, interface_index_of_dof);
+  allocate_vectors(d);
+  build_point_history_and_lumped_mass(d);
 
   // Initial state: u = 0, v = prescribed values, a = M^{-1} (f_ext - f_int).
   d.time = 0.0;

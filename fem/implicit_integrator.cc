@@ -197,6 +197,118 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
 }
 } // namespace
 
+namespace
+{
+/// External forces at t_{n+1-af}, condensed, zero on Dirichlet rows.
+void assemble_condensed_external_forces(FarFieldSolver::Data& d, ImplicitData& im,
+                                        const double t_alpha)
+{
+  im.external_condensed = 0.0;
+  d.assemble_external_forces(t_alpha, &im.external_condensed);
+  for (const DirichletDof& dirichlet : d.dirichlet_dofs)
+    im.external_condensed(dirichlet.dof) = 0.0;
+  im.external_condensed.compress(VectorOperation::insert);
+
+}
+
+/// Predictor a_{n+1} = a_n; Dirichlet dofs from their velocity at t_{n+1}. Returns the
+/// Dirichlet dofs' accelerations.
+std::vector<double> predict_displacement(FarFieldSolver::Data& d, ImplicitData& im,
+                                         const AlphaCoefficients& c, const double dt,
+                                         const double t_new)
+{
+  d.displacement.add(dt, im.v_old, 0.5 * dt * dt, im.a_old);
+  std::vector<double> a_dirichlet(d.dirichlet_dofs.size());
+  for (std::size_t k = 0; k < d.dirichlet_dofs.size(); ++k)
+  {
+    const DirichletDof& dirichlet = d.dirichlet_dofs[k];
+    const auto i = dirichlet.dof;
+    const double v_new = d.dirichlet_velocity(dirichlet, t_new);
+    a_dirichlet[k] = (v_new - im.v_old(i) - dt * (1.0 - c.gamma) * im.a_old(i)) / (c.gamma * dt);
+    d.displacement(i) = im.u_old(i) + dt * im.v_old(i) +
+                        dt * dt * ((0.5 - c.beta) * im.a_old(i) + c.beta * a_dirichlet[k]);
+  }
+  d.displacement.compress(VectorOperation::insert);
+  d.hanging_constraints.distribute(d.displacement);
+
+  return a_dirichlet;
+}
+
+/// One Newton correction: AMG-preconditioned CG or GMRES on the condensed system, added to
+/// the displacement. Returns what failed ("" on success).
+std::string apply_newton_correction(FarFieldSolver::Data& d, ImplicitData& im,
+                                    const double residual, ImplicitStepStatistics& stats)
+{
+  TrilinosWrappers::PreconditionAMG::AdditionalData amg;
+  amg.elliptic = true;
+  amg.higher_order_elements = d.prm.degree > 1;
+  amg.smoother_sweeps = 2;
+  amg.aggregation_threshold = 0.02;
+  amg.constant_modes = im.constant_modes;
+  im.preconditioner.initialize(im.matrix, amg);
+  SolverControl control(d.prm.max_linear_iterations, d.prm.linear_relative_tolerance * residual);
+  im.increment = 0.0;
+  try
+  {
+    if (d.prm.linear_solver == LinearSolverType::cg)
+    {
+      TrilinosWrappers::SolverCG solver(control);
+      solver.solve(im.matrix, im.increment, im.rhs, im.preconditioner);
+    }
+    else
+    {
+      TrilinosWrappers::SolverGMRES solver(control);
+      solver.solve(im.matrix, im.increment, im.rhs, im.preconditioner);
+    }
+  }
+  catch (const std::exception& e)
+  {
+    return std::string("linear solver: ") + e.what();
+  }
+  stats.linear_iterations += control.last_step();
+  d.increment_constraints.distribute(im.increment);
+  d.displacement += im.increment;
+  return {};
+}
+
+/// v_{n+1}, the Dirichlet dofs' exact values, the committed states, the energies of the step.
+void finish_step(FarFieldSolver::Data& d, ImplicitData& im, const AlphaCoefficients& c,
+                 const double dt, const double t_new, const std::vector<double>& a_dirichlet,
+                 const EvaluationSums& sums)
+{
+  // v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}); Dirichlet dofs get their exact value.
+  d.velocity = im.v_old;
+  d.velocity.add(dt * (1.0 - c.gamma), im.a_old, dt * c.gamma, d.acceleration);
+  for (std::size_t k = 0; k < d.dirichlet_dofs.size(); ++k)
+  {
+    const DirichletDof& dirichlet = d.dirichlet_dofs[k];
+    d.velocity(dirichlet.dof) = d.dirichlet_velocity(dirichlet, t_new);
+    d.acceleration(dirichlet.dof) = a_dirichlet[k];
+  }
+  d.velocity.compress(VectorOperation::insert);
+  d.acceleration.compress(VectorOperation::insert);
+  d.hanging_constraints.distribute(d.velocity);
+  d.hanging_constraints.distribute(d.acceleration);
+
+  d.time = t_new;
+  ++d.step;
+  d.commit_states();
+  d.last_sums = sums;
+  d.dissipated_energy += Utilities::MPI::sum(sums.dissipated, d.comm);
+  if (c.alpha_f != 0.0)
+  {
+    // Stress, internal forces and strain energy at u_{n+1} (the Newton system was at
+    // u_{n+1-af}); the committed states stay those of the converged system.
+    d.ghosted = d.displacement;
+    d.last_sums.strain_energy = d.evaluate_internal_forces(d.ghosted, nullptr).strain_energy;
+  }
+  d.assemble_external_forces(t_new, nullptr);
+  const double power = d.external_power();
+  d.external_work += 0.5 * dt * (d.last_power + power);
+  d.last_power = power;
+}
+} // namespace
+
 void FarFieldSolver::advance_implicit(const double dt)
 {
   Data& d = *data;
@@ -211,27 +323,9 @@ void FarFieldSolver::advance_implicit(const double dt)
   im.v_old = d.velocity;
   im.a_old = d.acceleration;
 
-  // External forces at t_{n+1-af}, condensed, zero on Dirichlet rows.
-  im.external_condensed = 0.0;
-  d.assemble_external_forces(t_alpha, &im.external_condensed);
-  for (const DirichletDof& dirichlet : d.dirichlet_dofs)
-    im.external_condensed(dirichlet.dof) = 0.0;
-  im.external_condensed.compress(VectorOperation::insert);
+  assemble_condensed_external_forces(d, im, t_alpha);
 
-  // Predictor a_{n+1} = a_n; Dirichlet dofs from their velocity at t_{n+1}.
-  d.displacement.add(dt, im.v_old, 0.5 * dt * dt, im.a_old);
-  std::vector<double> a_dirichlet(d.dirichlet_dofs.size());
-  for (std::size_t k = 0; k < d.dirichlet_dofs.size(); ++k)
-  {
-    const DirichletDof& dirichlet = d.dirichlet_dofs[k];
-    const auto i = dirichlet.dof;
-    const double v_new = d.dirichlet_velocity(dirichlet, t_new);
-    a_dirichlet[k] = (v_new - im.v_old(i) - dt * (1.0 - c.gamma) * im.a_old(i)) / (c.gamma * dt);
-    d.displacement(i) = im.u_old(i) + dt * im.v_old(i) +
-                        dt * dt * ((0.5 - c.beta) * im.a_old(i) + c.beta * a_dirichlet[k]);
-  }
-  d.displacement.compress(VectorOperation::insert);
-  d.hanging_constraints.distribute(d.displacement);
+  const std::vector<double> a_dirichlet = predict_displacement(d, im, c, dt, t_new);
 
   const double a_factor = 1.0 / (c.beta * dt * dt);
   const double mass_factor = (1.0 - c.alpha_m) * a_factor;
@@ -302,36 +396,9 @@ void FarFieldSolver::advance_implicit(const double dt)
     if (it == d.prm.max_newton_iterations)
       break;
 
-    TrilinosWrappers::PreconditionAMG::AdditionalData amg;
-    amg.elliptic = true;
-    amg.higher_order_elements = d.prm.degree > 1;
-    amg.smoother_sweeps = 2;
-    amg.aggregation_threshold = 0.02;
-    amg.constant_modes = im.constant_modes;
-    im.preconditioner.initialize(im.matrix, amg);
-    SolverControl control(d.prm.max_linear_iterations, d.prm.linear_relative_tolerance * residual);
-    im.increment = 0.0;
-    try
-    {
-      if (d.prm.linear_solver == LinearSolverType::cg)
-      {
-        TrilinosWrappers::SolverCG solver(control);
-        solver.solve(im.matrix, im.increment, im.rhs, im.preconditioner);
-      }
-      else
-      {
-        TrilinosWrappers::SolverGMRES solver(control);
-        solver.solve(im.matrix, im.increment, im.rhs, im.preconditioner);
-      }
-    }
-    catch (const std::exception& e)
-    {
-      failure = std::string("linear solver: ") + e.what();
+    failure = apply_newton_correction(d, im, residual, stats);
+    if (!failure.empty())
       break;
-    }
-    stats.linear_iterations += control.last_step();
-    d.increment_constraints.distribute(im.increment);
-    d.displacement += im.increment;
     last_correction = im.increment.l2_norm();
     TrilinosWrappers::MPI::Vector step(d.displacement);
     step -= im.u_old;
@@ -355,35 +422,6 @@ void FarFieldSolver::advance_implicit(const double dt)
     throw std::runtime_error(message.str());
   }
 
-  // v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}); Dirichlet dofs get their exact value.
-  d.velocity = im.v_old;
-  d.velocity.add(dt * (1.0 - c.gamma), im.a_old, dt * c.gamma, d.acceleration);
-  for (std::size_t k = 0; k < d.dirichlet_dofs.size(); ++k)
-  {
-    const DirichletDof& dirichlet = d.dirichlet_dofs[k];
-    d.velocity(dirichlet.dof) = d.dirichlet_velocity(dirichlet, t_new);
-    d.acceleration(dirichlet.dof) = a_dirichlet[k];
-  }
-  d.velocity.compress(VectorOperation::insert);
-  d.acceleration.compress(VectorOperation::insert);
-  d.hanging_constraints.distribute(d.velocity);
-  d.hanging_constraints.distribute(d.acceleration);
-
-  d.time = t_new;
-  ++d.step;
-  d.commit_states();
-  d.last_sums = sums;
-  d.dissipated_energy += Utilities::MPI::sum(sums.dissipated, d.comm);
-  if (c.alpha_f != 0.0)
-  {
-    // Stress, internal forces and strain energy at u_{n+1} (the Newton system was at
-    // u_{n+1-af}); the committed states stay those of the converged system.
-    d.ghosted = d.displacement;
-    d.last_sums.strain_energy = d.evaluate_internal_forces(d.ghosted, nullptr).strain_energy;
-  }
-  d.assemble_external_forces(t_new, nullptr);
-  const double power = d.external_power();
-  d.external_work += 0.5 * dt * (d.last_power + power);
-  d.last_power = power;
+  finish_step(d, im, c, dt, t_new, a_dirichlet, sums);
 }
 } // namespace vulnus::fem
