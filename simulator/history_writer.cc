@@ -13,6 +13,7 @@ void HistoryWriter::add_row(const Stepper& stepper)
   const std::vector<double> row = stepper.history_row(); // collective
   if (history)
     history->add_row(row);
+  last_row_step = stepper.step_count();
 }
 
 void HistoryWriter::start(Stepper& stepper)
@@ -38,7 +39,8 @@ void HistoryWriter::after_step(Stepper& stepper)
 
 void HistoryWriter::finish(Stepper& stepper)
 {
-  add_row(stepper);
+  if (stepper.step_count() != last_row_step)
+    add_row(stepper);
   flush();
 }
 

@@ -1,11 +1,12 @@
 // The CSV time history (history.csv) of every run type: a row of the stepper's columns at
-// the start, every `history_interval` steps and at the end.
+// the start, every `history_interval` steps and at the end (unless that step has its row).
 #pragma once
 
 #include "io/csv_history.h"
 #include "io/run_directory.h"
 #include "simulator/postprocessor.h"
 
+#include <cstdint>
 #include <memory>
 
 namespace vulnus::simulator
@@ -28,6 +29,7 @@ private:
 
   io::RunDirectory& directory;
   unsigned int interval;
-  std::unique_ptr<io::CsvHistory> history; ///< rank 0 only
+  std::uint64_t last_row_step = std::uint64_t(-1); ///< step of the newest row of this process
+  std::unique_ptr<io::CsvHistory> history;         ///< rank 0 only
 };
 } // namespace vulnus::simulator
