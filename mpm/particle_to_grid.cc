@@ -67,13 +67,14 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
                    const Vector3& momentum)
     {
       NodeBodyData& node = scatter_target(grid, grid.slot(key), n_bodies, b, fields, contested);
-      node.mass += w * m;
+      const double wm = w * m;
+      node.mass += wm;
       node.momentum += w * momentum;
       node.force -= volume_stress * grad_w;
       if constexpr (with_normals)
       {
         node.mass_gradient += m * grad_w;
-        node.mass_position += (w * m) * particles.position[p];
+        node.mass_position += wm * particles.position[p];
       }
     };
     // The node offset is computed only for APIC's affine momentum.

@@ -93,8 +93,8 @@ std::vector<std::string> HybridStepper::final_warnings() const
     warnings.push_back("*** " + std::to_string(failed) +
                        " FE quadrature points failed: the wound reached the far field; enlarge "
                        "Hybrid/Zone min and Zone max");
-  for (const std::string& w : mpm_final_warnings(solver.mpm()))
-    warnings.push_back(w);
+  const std::vector<std::string> mpm_warnings = mpm_final_warnings(solver.mpm());
+  warnings.insert(warnings.end(), mpm_warnings.begin(), mpm_warnings.end());
   return warnings;
 }
 
