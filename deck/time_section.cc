@@ -12,12 +12,13 @@ void declare_time_section(EntryTable& table)
   table.declare("CFL", "0.4", Patterns::Double(0.0, 1.0),
                 "Courant number C in dt = C h / max(c + |v|), in (0, 1]; rigid bodies are "
                 "excluded from the maximum.");
-  table.declare("Artificial viscosity linear", "0", Patterns::Double(0.0),
+  table.declare("Artificial viscosity linear", "0.06", Patterns::Double(0.0),
                 "Linear bulk viscosity coefficient q1 [-] of the shock viscosity q = rho (q1 c h "
-                "|tr D| + q2 h^2 (tr D)^2), acting in compression only (0: off). The hydrocodes' "
-                "usual pair 0.06 / 1.5 damps the ringing of the layer the bullet crushes ahead "
-                "of its nose (docs/converged_wound.md).");
-  table.declare("Artificial viscosity quadratic", "0", Patterns::Double(0.0),
+                "|tr D| + q2 h^2 (tr D)^2), acting in compression only (0: off). The default, "
+                "the hydrocodes' usual pair 0.06 / 1.5, damps the ringing of the layer the "
+                "bullet crushes ahead of its nose (docs/converged_wound.md); it vanishes as the "
+                "cell size h goes to zero.");
+  table.declare("Artificial viscosity quadratic", "1.5", Patterns::Double(0.0),
                 "Quadratic bulk viscosity coefficient q2 [-] (0: off); see the linear one.");
   table.declare("Maximum time step", "1", Patterns::Double(0.0),
                 "Cap dt_max on the time step [s]; must be > 0.");

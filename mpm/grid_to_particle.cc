@@ -73,17 +73,17 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
         auto update =
             [&](const std::size_t b, const ShareRange range, Vector3* momentum, Vector3* contested)
         {
+          const double flip =
+            s.body_flip_fraction.empty() ? s.flip_fraction : s.body_flip_fraction[b];
           if (s.body_is_rigid[b])
             for (long p = range.begin; p < range.end; ++p)
               particles.velocity[p] = s.rigid_velocity[b];
           else if (momentum)
-            update_share_velocities<shape, true>(grid, transfer.half_size_cells[b],
-                                                 s.flip_fraction, b, range, fields, particles,
-                                                 momentum, contested);
+            update_share_velocities<shape, true>(grid, transfer.half_size_cells[b], flip, b,
+                                                 range, fields, particles, momentum, contested);
           else
-            update_share_velocities<shape, false>(grid, transfer.half_size_cells[b],
-                                                  s.flip_fraction, b, range, fields, particles,
-                                                  nullptr, nullptr);
+            update_share_velocities<shape, false>(grid, transfer.half_size_cells[b], flip, b,
+                                                  range, fields, particles, nullptr, nullptr);
         };
         if (projection)
         {

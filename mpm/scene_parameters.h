@@ -135,6 +135,11 @@ struct SceneParameters
   VelocityTransfer velocity_transfer = VelocityTransfer::flip;
   /// relaxed_apic: tau in units of the Courant time h / max(c + |v|) (the CFL-1 step).
   double velocity_relaxation = 1.0;
+  /// A deformable projectile's points relax their FLIP velocity towards PIC over this many of
+  /// the projectile's own Courant times h / max(c + |v|) (0: it uses velocity_transfer). A
+  /// stiff projectile rings at its own grid-scale frequency after each contact impulse; FLIP
+  /// never damps that ringing, which then yields the metal numerically.
+  double projectile_velocity_relaxation = 0.0;
   DeformationUpdate deformation_update = DeformationUpdate::midpoint;
   double end_time = 1.0e-3;           ///< s
   double artificial_viscosity_linear = 0.0;    ///< bulk viscosity coefficients (0 = off)

@@ -129,16 +129,35 @@ void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& 
   energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
 }
 
+void Solver::relax_projectile_velocities(const double dt, const std::vector<double>& signal_speed)
+{
+  kinematics.body_flip_fraction.clear();
+  const int b = projectile_body;
+  if (parameters.projectile_velocity_relaxation <= 0.0 || b < 0 ||
+      grid_settings.body_is_rigid[b] || !(signal_speed[b] > 0.0))
+    return;
+  // Relaxed at the projectile's own Courant time: its ringing is damped within a few of its
+  // wave transits of a cell, at a rate fixed in time, while the target keeps its transfer.
+  kinematics.body_flip_fraction.assign(particles.n_bodies(), kinematics.flip_fraction);
+  const double courant_time = parameters.cell_size / signal_speed[b];
+  kinematics.body_flip_fraction[b] =
+    kinematics.flip_fraction *
+    std::exp(-dt / (parameters.projectile_velocity_relaxation * courant_time));
+}
+
 double Solver::stable_time_step() const
 {
   return step_limit(nullptr);
 }
 
-double Solver::step_limit(std::vector<double>* fastest_point_of_body) const
+double Solver::step_limit(std::vector<double>* fastest_point_of_body,
+                          std::vector<double>* signal_speed_of_body) const
 {
   double fastest = 0.0;
   if (fastest_point_of_body)
     fastest_point_of_body->assign(particles.n_bodies(), 0.0);
+  if (signal_speed_of_body)
+    signal_speed_of_body->assign(particles.n_bodies(), 0.0);
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
   {
     const long begin = particles.begin_of(b), end = particles.end_of(b);
@@ -160,10 +179,14 @@ double Solver::step_limit(std::vector<double>* fastest_point_of_body) const
     fastest = std::max(fastest, body_fastest);
     if (fastest_point_of_body)
       (*fastest_point_of_body)[b] = body_speed;
+    if (signal_speed_of_body)
+      (*signal_speed_of_body)[b] = body_fastest;
   }
   fastest = ranks.max(fastest);
   if (fastest_point_of_body)
     ranks.max(fastest_point_of_body->data(), static_cast<int>(fastest_point_of_body->size()));
+  if (signal_speed_of_body)
+    ranks.max(signal_speed_of_body->data(), static_cast<int>(signal_speed_of_body->size()));
   const double limit = fastest > 0.0 ? parameters.cfl * parameters.cell_size / fastest
                                      : parameters.max_time_step;
   return std::min(limit, parameters.max_time_step);
@@ -177,8 +200,8 @@ void Solver::advance(const double cap)
     phase += now - clock;
     clock = now;
   };
-  std::vector<double> fastest_point;
-  const double stable = step_limit(&fastest_point);
+  std::vector<double> fastest_point, signal_speed;
+  const double stable = step_limit(&fastest_point, &signal_speed);
   for (std::size_t b = 0; b < fastest_point.size(); ++b)
     peak_point_speed[b] = std::max(peak_point_speed[b], fastest_point[b]);
   if (!(stable >= parameters.min_time_step))
@@ -203,6 +226,7 @@ void Solver::advance(const double cap)
     const double courant_time = stable / parameters.cfl;
     kinematics.flip_fraction = std::exp(-dt / (parameters.velocity_relaxation * courant_time));
   }
+  relax_projectile_velocities(dt, signal_speed);
   lap(timings.time_step);
 
   mark_active_nodes(particles, transfer, grid);

@@ -142,7 +142,11 @@ public:
 
 private:
   /// The CFL step; with a non-null argument also each body's fastest point speed (collective).
-  double step_limit(std::vector<double>* fastest_point_of_body) const;
+  /// The CFL step; per body (when asked) the fastest point speed |v| and signal speed c + |v|.
+  /// Sets the projectile's FLIP fraction for this step (scene.projectile_velocity_relaxation).
+  void relax_projectile_velocities(double dt, const std::vector<double>& signal_speed);
+  double step_limit(std::vector<double>* fastest_point_of_body,
+                    std::vector<double>* signal_speed_of_body = nullptr) const;
   void sort_points();
   void exchange_shared_nodes(double dt);
   void sum_shared_state_over_ranks();
