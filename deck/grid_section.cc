@@ -48,7 +48,7 @@ void declare_grid_section(EntryTable& table)
   table.declare("Velocity relaxation", "1", Patterns::Double(1e-3, 1e3),
                 "relaxed PIC and APIC: relaxation time tau of the FLIP part in Courant times h / max(c + "
                 "|v|) (the step at CFL 1) [-]; the FLIP fraction per step is exp(-dt / tau).");
-  table.declare("Projectile velocity relaxation", "0.25", Patterns::Double(0.0, 1e3),
+  table.declare("Projectile velocity relaxation", "0.1", Patterns::Double(0.0, 1e3),
                 "A deformable projectile's points relax their FLIP velocity towards the PIC "
                 "velocity over this many of the projectile's own Courant times h / max(c + |v|) "
                 "[-] (0: the projectile uses Velocity transfer like every body). Each contact "

@@ -62,11 +62,11 @@ BallRun fire_copper_ball(const double projectile_relaxation)
 TEST(MpmStiffProjectile, RelaxationKeepsTheBallElasticAndConservesMomentum)
 {
   const BallRun flip = fire_copper_ball(0.0);
-  const BallRun relaxed = fire_copper_ball(0.25); // the deck default
+  const BallRun relaxed = fire_copper_ball(0.1); // the deck default
   // The mechanism: plain FLIP yields the ball, as in the paper scenes.
   EXPECT_GE(flip.peak_yield_ratio, 1.0);
   // The physical peak is about rho v^2 / yield = 0.06 plus the impact stress of the first
-  // contact; measured 0.79 (0.998 with a relaxation time of 0.5, 0.69 with 0.1). Bound 0.9:
+  // contact; measured 0.69 (0.998 with a relaxation time of 0.5, 0.79 with 0.25). Bound 0.9:
   // room for the grid-scale contact pressure, not for yield.
   EXPECT_LT(relaxed.peak_yield_ratio, 0.9);
   // PIC and FLIP both conserve momentum (free faces, no gravity): round-off.
