@@ -145,6 +145,18 @@ void check_time(const RunParameters& p, Checker& check)
                 "must be below Time/Maximum time step (got " + number(scene.min_time_step) +
                     " >= " + number(scene.max_time_step) + ")",
                 "lower it, e.g. 1e-12");
+  check.require(!(scene.end_time > 0.0) || scene.min_time_step < scene.end_time,
+                "Time/Minimum time step",
+                "must be below Time/End time (got " + number(scene.min_time_step) +
+                    " >= " + number(scene.end_time) + "), so the first step would already stop "
+                    "the run as a collapsed step",
+                "lower it, e.g. 1e-12");
+  const EnergyGuardParameters& guard = p.energy_guard;
+  check.require_all(guard.warning <= 0.0 || guard.limit <= 0.0 || guard.warning < guard.limit,
+                    {"Time/Energy balance warning", "Time/Energy balance limit"},
+                    "the warning bound (" + number(guard.warning) + ") must be below the limit (" +
+                      number(guard.limit) + "), or the run would stop before it warns",
+                    "lower the warning (default 0.05) or raise the limit (default 0.3)");
   check.require(p.output.particle_interval <= scene.end_time, "Output/Particle output interval",
                 "exceeds Time/End time (" + number(p.output.particle_interval) + " > " +
                     number(scene.end_time) + "), so no particle output would be written in between",

@@ -377,7 +377,7 @@ RunParameters read_run_parameters_from_text(const std::string& text, const std::
   parameters.scene.bodies = parse_body_sections(prm, deck.names.bodies);
   parse_grid_section(prm, parameters.scene);
   parse_contact_section(prm, parameters.scene.contact);
-  parse_time_section(prm, parameters.scene);
+  parse_time_section(prm, parameters.scene, parameters.energy_guard);
   parse_output_section(prm, parameters.output);
   parse_run_section(prm, parameters.scene);
   parse_far_field_section(prm, parameters);

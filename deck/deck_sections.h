@@ -27,7 +27,8 @@ void declare_contact_section(EntryTable& table);
 void parse_contact_section(dealii::ParameterHandler& prm, mpm::ContactParameters& contact);
 
 void declare_time_section(EntryTable& table);
-void parse_time_section(dealii::ParameterHandler& prm, mpm::SceneParameters& scene);
+void parse_time_section(dealii::ParameterHandler& prm, mpm::SceneParameters& scene,
+                        EnergyGuardParameters& energy_guard);
 
 void declare_output_section(EntryTable& table);
 void parse_output_section(dealii::ParameterHandler& prm, OutputParameters& output);

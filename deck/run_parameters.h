@@ -35,6 +35,14 @@ enum class Method
   fe   ///< finite elements only: one deformable box body, no projectile
 };
 
+/// The energy guard every run keeps (Time section): bounds on |energy balance error|, the
+/// unaccounted energy over the scene's initial energy.
+struct EnergyGuardParameters
+{
+  double warning = 0.05; ///< beyond it the run warns, once, at the step it was first seen
+  double limit = 0.3;    ///< beyond it the run stops as a blow-up
+};
+
 struct RunParameters
 {
   mpm::SceneParameters scene;
@@ -44,6 +52,7 @@ struct RunParameters
   fem::FeSceneParameters far_field;
   coupling::HybridParameters hybrid;
   OutputParameters output;
+  EnergyGuardParameters energy_guard;
   /// The deck as given on the command line ("" when read from a string).
   std::string deck_path;
   /// Every parameter as resolved (deck, then overrides), in PRM format: deck_used.prm.

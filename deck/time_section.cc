@@ -24,12 +24,21 @@ void declare_time_section(EntryTable& table)
                 "Cap dt_max on the time step [s]; must be > 0.");
   table.declare("Minimum time step", "1e-12", Patterns::Double(0.0),
                 "Floor dt_min [s]: a step below it stops the run as a blow-up.");
+  table.declare("Energy balance warning", "0.05", Patterns::Double(0.0),
+                "Energy guard [-]: when |energy balance error| (energy neither present, "
+                "dissipated nor removed, over the scene's initial energy) first exceeds this, "
+                "the run warns in the log and summary.json with the step and the likely cause. "
+                "Converged paper scenes stay below 0.015; 0 switches the warning off.");
+  table.declare("Energy balance limit", "0.3", Patterns::Double(0.0),
+                "Energy guard [-]: beyond this |energy balance error| the run stops as a "
+                "blow-up and keeps its last good state; 0 switches the stop off.");
   table.declare("Stop when projectile exits", "true", Patterns::Bool(),
                 "Stop once the projectile's tail has left every other body, before t_end.");
   table.leave();
 }
 
-void parse_time_section(dealii::ParameterHandler& prm, mpm::SceneParameters& scene)
+void parse_time_section(dealii::ParameterHandler& prm, mpm::SceneParameters& scene,
+                        EnergyGuardParameters& energy_guard)
 {
   prm.enter_subsection("Time");
   scene.end_time = prm.get_double("End time");
@@ -39,6 +48,8 @@ void parse_time_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   scene.max_time_step = prm.get_double("Maximum time step");
   scene.min_time_step = prm.get_double("Minimum time step");
   scene.stop_when_projectile_exits = prm.get_bool("Stop when projectile exits");
+  energy_guard.warning = prm.get_double("Energy balance warning");
+  energy_guard.limit = prm.get_double("Energy balance limit");
   prm.leave_subsection();
 }
 } // namespace vulnus::deck

@@ -53,6 +53,17 @@ std::string FeStepper::progress() const
   return "failed quadrature points " + std::to_string(solver->diagnostics().n_failed_points);
 }
 
+double FeStepper::energy_balance_error() const
+{
+  return balance_error(solver->diagnostics());
+}
+
+std::string FeStepper::energy_error_causes() const
+{
+  return "a Far field/CFL (explicit) or time step (implicit) too large for the load, or a "
+         "load that deforms the mesh beyond what it resolves";
+}
+
 std::string FeStepper::blow_up_remedy() const
 {
   return "a smaller Far field/CFL (explicit) or time step (implicit), or a smaller Far field "

@@ -72,6 +72,20 @@ std::string HybridStepper::progress() const
   return o.str();
 }
 
+double HybridStepper::energy_balance_error() const
+{
+  const double energy = hybrid_scene_energy(solver, solver.mpm().diagnostics(),
+                                            solver.fe().diagnostics());
+  return initial_energy > 0 ? (energy - initial_energy) / initial_energy : 0.0;
+}
+
+std::string HybridStepper::energy_error_causes() const
+{
+  return "a Time/CFL too large, the interface exchange (Hybrid/Scheme; see the interface "
+         "energy error in history.csv), or a projectile pushed into a fixed face or another "
+         "rigid body";
+}
+
 std::string HybridStepper::blow_up_remedy() const
 {
   return "a smaller Time/CFL or Far field time step; an inverted or failed FE element means the "

@@ -25,6 +25,8 @@ public:
   std::string progress() const override;
   MPI_Comm communicator() const override { return solver.mpm().rank_group().communicator(); }
   std::string blow_up_remedy() const override;
+  double energy_balance_error() const override;
+  std::string energy_error_causes() const override;
 
   std::vector<std::string> history_columns() const override;
   std::vector<double> history_row() const override;

@@ -106,6 +106,20 @@ std::string MpmStepper::progress() const
   return std::to_string(n_points_at_start - solver.removed_points()) + " points";
 }
 
+double MpmStepper::energy_balance_error() const
+{
+  const double initial = solver.initial_energy();
+  return initial > 0 ? (analysis::accounted_energy(solver, solver.diagnostics()) - initial) / initial
+                     : 0.0;
+}
+
+std::string MpmStepper::energy_error_causes() const
+{
+  return "a Time/CFL too large, bodies driven into each other or into a fixed face (a rigid "
+         "body against a prescribed one), or no-slip contact (Contact/Friction coefficient = "
+         "-1) between fast bodies";
+}
+
 std::string MpmStepper::blow_up_remedy() const
 {
   return "a smaller Time/CFL (restart from the last checkpoint with it), or a finer Grid/Cell "

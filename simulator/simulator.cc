@@ -5,6 +5,7 @@
 #include "mpm/solver.h"
 #include "io/summary_json.h"
 #include "simulator/checkpointer.h"
+#include "simulator/energy_guard.h"
 #include "simulator/failure_report.h"
 #include "simulator/history_writer.h"
 #include "simulator/mesh_series.h"
@@ -108,6 +109,26 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
     return where;
   };
 
+  EnergyGuard energy_guard(parameters.energy_guard);
+  auto guard_energy = [&](const bool final_check) {
+    if (const auto warning = energy_guard.check(stepper, final_check))
+    {
+      directory.warn(*warning);
+      totals.warnings.push_back(*warning);
+    }
+  };
+  auto report_failure = [&](const std::exception& e) {
+    const FailureReport report = describe_failure(e);
+    std::ostringstream o;
+    o << report.kind << " at step " << stepper.step_count() << " (t = " << stepper.time()
+      << " s): " << report.message;
+    totals.completed = false;
+    totals.error = o.str();
+    directory.warn(o.str());
+    directory.warn("likely remedy: " + stepper.blow_up_remedy());
+    directory.warn("the last good state is " + last_good_state());
+  };
+
   double last_progress = 0.0;
   int stop_signal = 0;
   while (!stepper.finished())
@@ -121,19 +142,20 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
     }
     catch (const std::exception& e)
     {
-      const FailureReport report = describe_failure(e);
-      std::ostringstream o;
-      o << report.kind << " at step " << stepper.step_count() << " (t = " << stepper.time()
-        << " s): " << report.message;
-      totals.completed = false;
-      totals.error = o.str();
-      directory.warn(o.str());
-      directory.warn("likely remedy: " + stepper.blow_up_remedy());
-      directory.warn("the last good state is " + last_good_state());
+      report_failure(e);
       break;
     }
     for (const auto& p : postprocessors)
       p->after_step(stepper);
+    try
+    {
+      guard_energy(false);
+    }
+    catch (const std::exception& e)
+    {
+      report_failure(e); // the step is recorded; the state is past the limit
+      break;
+    }
     const double seconds = ranks.max(wall.seconds()); // the same on every rank
     if (checkpoints.due(stepper, seconds))
       directory.log("checkpoint: " + checkpoints.write(stepper, postprocessors, seconds));
@@ -165,6 +187,15 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
     totals.error = o.str() + " (no checkpoint: " + stepper.method() + " runs cannot write one yet)";
     directory.warn(totals.error);
   }
+  if (totals.completed && stop_signal == 0)
+    try
+    {
+      guard_energy(true);
+    }
+    catch (const std::exception& e)
+    {
+      report_failure(e);
+    }
   for (const auto& p : postprocessors)
     if (totals.completed)
       p->finish(stepper);

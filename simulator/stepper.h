@@ -51,6 +51,11 @@ public:
   virtual MPI_Comm communicator() const = 0;
   /// The deck entries a blow-up most likely asks to change.
   virtual std::string blow_up_remedy() const = 0;
+  /// Collective: the energy neither present, dissipated nor removed, over the scene's
+  /// reference energy (summary.json's energy.balance_error, now).
+  virtual double energy_balance_error() const = 0;
+  /// What most likely breaks the energy balance of this kind of run.
+  virtual std::string energy_error_causes() const = 0;
 
   virtual std::vector<std::string> history_columns() const = 0;
   /// Collective: one row matching history_columns().
