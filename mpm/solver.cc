@@ -319,6 +319,27 @@ bool Solver::finished() const
   return false;
 }
 
+double Solver::expected_end_time() const
+{
+  const double end = parameters.end_time;
+  if (!parameters.stop_when_projectile_exits || projectile_body < 0 || particles.n_bodies() < 2)
+    return end;
+  double tail = std::numeric_limits<double>::max(), momentum = 0.0, mass = 0.0;
+  for (std::size_t p = particles.begin_of(projectile_body); p < particles.end_of(projectile_body); ++p)
+  {
+    tail = std::min(tail, particles.position[p].dot(flight_axis));
+    momentum += particles.mass[p] * particles.velocity[p].dot(flight_axis);
+    mass += particles.mass[p];
+  }
+  tail = ranks.min(tail);
+  double sums[2] = {momentum, mass};
+  ranks.sum(sums, 2);
+  const double speed = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
+  if (!(speed > 0.0))
+    return end; // stopped or going back: nothing to extrapolate
+  return std::min(end, current_time + std::max(0.0, exit_plane - tail) / speed);
+}
+
 std::vector<char> Solver::bodies_with_plastic_history() const
 {
   std::vector<char> flags;

@@ -114,6 +114,9 @@ public:
   /// bit for bit (same thread count). Throws std::runtime_error on a mismatch or a short file.
   void save(std::ostream& out) const;
   void restore(std::istream& in);
+  /// Collective: when the run will most likely end: the end time, or earlier the time at
+  /// which the projectile's tail passes the exit plane at its current mean speed.
+  double expected_end_time() const;
   /// Index of the projectile body, or -1.
   int projectile() const { return projectile_body; }
   /// Axis of the projectile's flight (unit), or +y when there is no projectile.

@@ -20,6 +20,7 @@ public:
   bool finished() const override { return solver.finished(); }
   double time() const override { return solver.time(); }
   double end_time() const override { return solver.mpm().scene().end_time; }
+  double expected_end_time() const override { return solver.mpm().expected_end_time(); }
   std::uint64_t step_count() const override { return solver.mpm().step_count(); }
   double last_time_step() const override { return solver.mpm().last_time_step(); }
   std::string progress() const override;

@@ -32,6 +32,7 @@ public:
   bool finished() const override { return solver.finished(); }
   double time() const override { return solver.time(); }
   double end_time() const override { return solver.scene().end_time; }
+  double expected_end_time() const override { return solver.expected_end_time(); }
   std::uint64_t step_count() const override { return solver.step_count(); }
   double last_time_step() const override { return solver.last_time_step(); }
   std::string progress() const override;

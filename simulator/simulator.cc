@@ -166,8 +166,8 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
       std::ostringstream o;
       o << "t = " << std::scientific << std::setprecision(3) << stepper.time() << " s, step "
         << stepper.step_count() << ", dt = " << stepper.last_time_step() << " s, "
-        << stepper.progress() << ", time left <= "
-        << format_seconds((stepper.end_time() - stepper.time()) / rate);
+        << stepper.progress() << ", time left about "
+        << format_seconds((stepper.expected_end_time() - stepper.time()) / rate);
       directory.log(o.str());
     }
   }

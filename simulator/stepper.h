@@ -43,6 +43,8 @@ public:
   virtual bool finished() const = 0;
   virtual double time() const = 0;
   virtual double end_time() const = 0;
+  /// Collective: when the run will most likely end (the progress line's time left).
+  virtual double expected_end_time() const { return end_time(); }
   virtual std::uint64_t step_count() const = 0;
   virtual double last_time_step() const = 0;
   /// What a progress line adds after time, step and dt.

@@ -115,6 +115,25 @@ TEST(MpmContact, FreeRigidProjectileIsSlowedByTheTarget)
   EXPECT_NEAR(end.bodies[0].velocity[1] * end.bodies[0].mass, lost, 1e-6 * lost + 1e-12);
 }
 
+// The progress line's time left: at the start the ball's tail must cover the distance to the
+// slab's far face at 50 m/s; the estimate never passes the end time.
+TEST(MpmContact, ExpectedEndIsWhenTheProjectileTailPassesTheTarget)
+{
+  mpm::SceneParameters scene = test::rigid_ball_into_gel_slab();
+  scene.stop_when_projectile_exits = true;
+  scene.end_time = 1.0;
+  const mpm::Solver solver(scene);
+  const mpm::Particles& points = solver.points();
+  double tail = 1.0, far_face = -1.0;
+  for (std::size_t p = points.begin_of(1); p < points.end_of(1); ++p)
+    tail = std::min(tail, points.position[p][1]);
+  for (std::size_t p = points.begin_of(0); p < points.end_of(0); ++p)
+    far_face = std::max(far_face, points.position[p][1]);
+  EXPECT_NEAR(solver.expected_end_time(), (far_face - tail) / 50.0, 1e-12);
+  scene.end_time = 1e-5; // before the exit: the end time bounds it
+  EXPECT_DOUBLE_EQ(mpm::Solver(scene).expected_end_time(), 1e-5);
+}
+
 namespace
 {
 /// A rigid plate moving at 1 m/s towards a resting gel block across a 2 mm gap (2 cells,
