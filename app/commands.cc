@@ -6,6 +6,7 @@
 #include "io/atomic_file.h"
 #include "deck/deck_reader.h"
 #include "io/run_directory.h"
+#include "simulator/checkpointer.h"
 #include "simulator/simulation_runner.h"
 #include "deck/version.h"
 
@@ -73,6 +74,11 @@ int run_command(const CommandLine& line)
       directory.log("  override " + override_.origin);
     directory.log("run directory: " + directory.path());
     return run_simulation(parameters, directory);
+  }
+  catch (const simulator::RestartRefused& error) // the deck is wrong for this run
+  {
+    std::cerr << "vulnus: error: " << error.what() << '\n';
+    return 2;
   }
   catch (const std::exception& error)
   {

@@ -94,10 +94,20 @@ void update_stresses(const StressUpdateSettings& s, const double* volumetric_rat
         }
         catch (const std::exception& e)
         {
+          // The block failed as a whole: name its first inverted or non-finite point (what
+          // the laws refuse), else its first point.
+          long bad = first;
+          for (long p = first; p < last; ++p)
+            if (const double J = particles.deformation_gradient[p].determinant();
+                !(J > 0.0) || !std::isfinite(J))
+            {
+              bad = p;
+              break;
+            }
 #pragma omp critical
-          if (failed_point < 0 || first < failed_point)
+          if (failed_point < 0 || bad < failed_point)
           {
-            failed_point = first;
+            failed_point = bad;
             message = e.what();
           }
         }

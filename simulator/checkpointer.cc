@@ -46,7 +46,7 @@ void Checkpointer::restart(Stepper& stepper,
   const std::string difference = deck::first_deck_difference(
     progress.resolved_deck, parameters.resolved_deck, restart_may_change);
   if (!difference.empty())
-    throw std::runtime_error("--restart: the deck does not match the checkpoint '" + used +
+    throw RestartRefused("--restart: the deck does not match the checkpoint '" + used +
                              "': " + difference + ". Restart with the run's deck (" +
                              directory.file("deck_used.prm") + ")");
   directory.write_deck_used(parameters.resolved_deck);

@@ -10,11 +10,20 @@
 #include "simulator/postprocessor.h"
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace vulnus::simulator
 {
+/// A restart whose deck differs from the checkpoint's in an entry a restart may not change:
+/// an input error (exit status 2), not a failure of the run.
+class RestartRefused : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
 class Checkpointer
 {
 public:
@@ -23,8 +32,9 @@ public:
                const mpm::RankGroup& ranks);
 
   /// Restores the stepper and resumes every postprocessor from the newest complete
-  /// checkpoint. Throws std::runtime_error when there is none, the ranks disagree, or the
-  /// deck differs from the checkpoint's in an entry a restart may not change.
+  /// checkpoint. Throws std::runtime_error when there is none or the ranks disagree, and
+  /// RestartRefused when the deck differs from the checkpoint's in an entry a restart may not
+  /// change.
   void restart(Stepper& stepper, const std::vector<std::unique_ptr<Postprocessor>>& postprocessors);
 
   /// True when the step or wall-clock interval of checkpoints has passed.

@@ -1,7 +1,9 @@
 // MPM verification against exact or analytic solutions: free translation, the axial
 // vibration of an elastic bar, face boundary conditions, failure flags in a stretched block,
 // and independence of the thread count.
+#include "materials/material_registry.h"
 #include "mpm/solver.h"
+#include "mpm/stress_update.h"
 #include "scene_fixtures.h"
 
 #include <Eigen/Eigenvalues>
@@ -274,4 +276,25 @@ TEST(MpmVerification, ResultsDoNotDependOnTheThreadCount)
   // Contact decisions (approaching or not) are discontinuous in the velocities, so round-off
   // can flip one at a node where the bodies barely touch; bound: 1e-3 of a cell.
   EXPECT_LT(largest_difference(two_spheres(0.5e-3), 60), 1e-6);
+}
+
+// A material update that fails names the point that failed, not the first point of its
+// block of 512: one inverted point in the middle of the second block.
+TEST(MpmVerification, AFailedMaterialUpdateNamesThePointThatFailed)
+{
+  const auto material = materials::create_material(test::elastic_material("gel", 1e5, 1e4).parameters);
+  mpm::Particles points;
+  points.start_body();
+  for (int i = 0; i < 2000; ++i)
+    points.append(Vector3(1e-3 * i, 0, 0), Vector3::Zero(), 1e-6, 1e-9, Vector3::UnitX(), false);
+  points.finish_body();
+  points.deformation_gradient[1234] = Eigen::Vector3d(1.0, 1.0, -0.5).asDiagonal(); // J < 0
+  mpm::StressUpdateSettings settings;
+  settings.cell_size = 1e-3;
+  settings.body_material = {material.get()};
+  settings.body_density = {1000.0};
+  mpm::StressUpdateResult result;
+  mpm::update_stresses(settings, nullptr, points, result);
+  EXPECT_EQ(result.failed_point, 1234);
+  EXPECT_NE(result.failure_message.find("det F"), std::string::npos) << result.failure_message;
 }

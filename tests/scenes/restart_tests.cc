@@ -155,7 +155,7 @@ TEST_F(Restart, ChangedPhysicsIsRefusedNamingTheEntry)
   fs::copy(scratch->path / "reference", run, fs::copy_options::recursive);
   const CommandResult r = run_vulnus(
     "run " + scene_arguments("--restart changed --set 'Material tissue/Transversely isotropic hyperelastic/c1=2000'"), scratch->path);
-  EXPECT_EQ(r.exit_status, 1);
+  EXPECT_EQ(r.exit_status, 2); // an input error, like a bad deck
   EXPECT_NE(r.err.find("Material tissue/Transversely isotropic hyperelastic/c1: '"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("'2000' in the deck"), std::string::npos) << r.err;
   // A longer end time or a smaller CFL is a continuation, not another scene.
