@@ -72,6 +72,28 @@ std::vector<std::string> CheckpointStore::files() const
   return found;
 }
 
+std::string CheckpointStore::newest_deck() const
+{
+  for (const std::string& candidate : files())
+  {
+    try
+    {
+      std::ifstream in(candidate, std::ios::binary);
+      if (!in)
+        continue;
+      expect_tag(in, header_tag, "it is not a vulnus run checkpoint");
+      std::string deck;
+      get_text(in, deck);
+      return deck;
+    }
+    catch (const std::exception&)
+    {
+      // a damaged header: read_newest reports it when it skips the file
+    }
+  }
+  return "";
+}
+
 RunProgress CheckpointStore::read_newest(const std::function<void(std::istream&)>& read_state,
                                          const std::function<void(const std::string&)>& warn,
                                          std::string& path) const

@@ -44,6 +44,10 @@ public:
                           const std::function<void(const std::string&)>& warn,
                           std::string& path) const;
 
+  /// The resolved deck in the newest checkpoint whose header can be read ("" when none): what
+  /// a restart compares with its own deck before it restores any state.
+  std::string newest_deck() const;
+
   /// Checkpoint files, newest first (temporary files excluded).
   std::vector<std::string> files() const;
 

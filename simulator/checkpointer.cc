@@ -3,6 +3,7 @@
 
 #include "deck/deck_difference.h"
 
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
@@ -22,6 +23,18 @@ std::string checkpoint_folder(const mpm::RankGroup& ranks)
 {
   return ranks.distributed() ? "checkpoints/rank_" + std::to_string(ranks.rank()) : "checkpoints";
 }
+
+/// The rank count whose checkpoints `folder` holds: the number of rank_R folders (0 for a
+/// serial run's layout).
+int ranks_of_checkpoints(const std::filesystem::path& folder)
+{
+  int n = 0;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error))
+    if (entry.is_directory() && entry.path().filename().string().rfind("rank_", 0) == 0)
+      ++n;
+  return n;
+}
 } // namespace
 
 Checkpointer::Checkpointer(const deck::RunParameters& parameters, io::RunDirectory& directory,
@@ -34,6 +47,25 @@ Checkpointer::Checkpointer(const deck::RunParameters& parameters, io::RunDirecto
 void Checkpointer::restart(Stepper& stepper,
                            const std::vector<std::unique_ptr<Postprocessor>>& postprocessors)
 {
+  const int written_on = ranks_of_checkpoints(directory.file("checkpoints"));
+  const int running_on = ranks.distributed() ? ranks.size() : 0;
+  if (written_on != running_on)
+    throw RestartRefused(
+      "--restart: the checkpoints in " + directory.file("checkpoints") + " were written by a run on " +
+      (written_on == 0 ? std::string("1 process") : std::to_string(written_on) + " MPI ranks") +
+      ", this run has " +
+      (running_on == 0 ? std::string("1 process") : std::to_string(running_on) + " ranks") +
+      "; restart on the same count (" +
+      (written_on == 0 ? std::string("without mpirun, or -np 1") : "mpirun -np " + std::to_string(written_on)) + ")");
+  // The deck first: a restart without an earlier --set would otherwise fail to restore every
+  // checkpoint and call them all damaged.
+  if (const std::string deck = store.newest_deck(); !deck.empty())
+    if (const std::string difference = deck::first_deck_difference(
+          deck, parameters.resolved_deck, restart_may_change);
+        !difference.empty())
+      throw RestartRefused("--restart: the deck does not match the newest checkpoint: " +
+                           difference + ". Restart with the run's deck (" +
+                           directory.file("deck_used.prm") + ") and its --set entries");
   std::string used;
   const io::RunProgress progress =
     store.read_newest([&](std::istream& in) { stepper.restore(in); },

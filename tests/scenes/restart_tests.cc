@@ -165,6 +165,21 @@ TEST_F(Restart, ChangedPhysicsIsRefusedNamingTheEntry)
   EXPECT_EQ(longer.exit_status, 0) << longer.err;
 }
 
+// A restart that leaves out one of the run's --set entries (here the rigid bullet) names
+// that entry; restoring first called every good checkpoint "inconsistent".
+TEST_F(Restart, AForgottenSetEntryIsNamed)
+{
+  const fs::path run = scratch->path / "forgotten";
+  fs::copy(scratch->path / "reference", run, fs::copy_options::recursive);
+  const CommandResult r = run_vulnus(
+    "run '" + source_dir() + "/inputs/paper/anisotropic_150ms_coarse.prm' --threads 2"
+    " --set 'Time/End time=1e-4' --restart forgotten", scratch->path);
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_NE(r.err.find("Material bullet/Model"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("inconsistent"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("skipped"), std::string::npos) << r.err;
+}
+
 TEST(RestartRefusals, NoCheckpointHybridAndOutputTogether)
 {
   ScratchDirectory scratch("restart_refusals");
@@ -177,6 +192,15 @@ TEST(RestartRefusals, NoCheckpointHybridAndOutputTogether)
                  scratch.path);
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_NE(r.err.find("only pure-MPM runs can be restarted"), std::string::npos) << r.err;
+
+  // Checkpoints of a 2-rank run restarted on one process: the counts named, exit 2.
+  fs::create_directories(scratch.path / "two_ranks" / "checkpoints" / "rank_0");
+  fs::create_directories(scratch.path / "two_ranks" / "checkpoints" / "rank_1");
+  r = run_vulnus("run " + scene_arguments("--restart two_ranks"), scratch.path);
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.err.find("written by a run on 2 MPI ranks, this run has 1 process"), std::string::npos)
+    << r.err;
+  EXPECT_NE(r.err.find("mpirun -np 2"), std::string::npos) << r.err;
 
   r = run_vulnus("run deck.prm --restart a --output b", scratch.path);
   EXPECT_EQ(r.exit_status, 2);
