@@ -191,15 +191,21 @@ std::vector<std::string> check_decomposition(const mpm::SceneParameters& scene,
     if (hybrid.zone_min[d] < slab.box_min[d] - tolerance ||
         hybrid.zone_max[d] > slab.box_max[d] + tolerance)
       zone_inside = false;
-    for (const double bound : {hybrid.zone_min[d], hybrid.zone_max[d]})
+    for (const bool lower : {true, false})
     {
+      const double bound = lower ? hybrid.zone_min[d] : hybrid.zone_max[d];
       const double cells = (bound - scene.domain_min[d]) / h;
       if (std::abs(cells - std::round(cells)) * h > tolerance)
       {
+        // Outwards, so the zone keeps what was asked for (an inward node can leave it too
+        // small for the projectile), unless that leaves the body.
+        double node = scene.domain_min[d] + (lower ? std::floor(cells) : std::ceil(cells)) * h;
+        if (node < slab.box_min[d] - tolerance || node > slab.box_max[d] + tolerance)
+          node = scene.domain_min[d] + (lower ? std::ceil(cells) : std::floor(cells)) * h;
         std::ostringstream s;
         s << "Hybrid/Zone min, Hybrid/Zone max: " << axis_name(d) << " = " << bound
           << " m is not on a grid node (Grid/Domain min + k * Grid/Cell size); move it to "
-          << scene.domain_min[d] + std::round(cells) * h << " m";
+          << node << " m";
         problems.push_back(s.str());
       }
     }
