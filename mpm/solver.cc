@@ -292,6 +292,8 @@ void Solver::advance(const double cap)
   material_problem = ranks.first_message(material_problem);
   if (!material_problem.empty())
     throw BlowUp(material_problem);
+  if (const std::string problem = ranks.first_message(rigid_face_problem()); !problem.empty())
+    throw BlowUp(problem);
   if (parameters.remove_points_leaving_grid)
     remove_points_outside_grid();
   check_state();
@@ -449,6 +451,41 @@ void Solver::check_state() const
   const std::string problem = ranks.first_message(state_problem());
   if (!problem.empty())
     throw BlowUp(problem);
+}
+
+std::string Solver::rigid_face_problem() const
+{
+  static const char* const face_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+  {
+    if (!grid_settings.body_is_rigid[b])
+      continue;
+    for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
+      for (int face = 0; face < 6; ++face)
+      {
+        const int d = face / 2;
+        const bool upper = face % 2 == 1;
+        const double x = particles.position[p][d];
+        const bool beyond = upper ? x > parameters.domain_max[d] : x < parameters.domain_min[d];
+        if (!beyond || parameters.domain_faces[face] == FaceCondition::free)
+          continue;
+        // Only a body moving out through the face: one that starts beyond it (a projectile
+        // entering through it) is not stopped by it either.
+        const double v = grid_settings.rigid_velocity[b][d];
+        if (upper ? v <= 0.0 : v >= 0.0)
+          continue;
+        std::ostringstream s;
+        s << "rigid body '" << parameters.bodies[b].name << "' reached the "
+          << (parameters.domain_faces[face] == FaceCondition::fixed ? "fixed" : "roller") << " "
+          << face_names[face] << " face of the domain at step " << n_steps << ", t = "
+          << current_time << " s, " << describe_point(p)
+          << "; rigid bodies do not obey face conditions, so it would pass through. Likely "
+             "cause: a projectile aimed at a constrained face; enlarge Grid/Domain min and max, "
+             "make that face free, or end the run earlier";
+        return s.str();
+      }
+  }
+  return {};
 }
 
 std::string Solver::state_problem() const

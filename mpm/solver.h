@@ -163,6 +163,9 @@ private:
   std::vector<char> bodies_with_plastic_history() const;
   void check_state() const;
   std::string state_problem() const;
+  /// A rigid body with a point beyond a fixed or roller domain face (rigid bodies ignore face
+  /// conditions, so it would pass through), described; "" when there is none. Local.
+  std::string rigid_face_problem() const;
   void plan_slabs();
   void rebalance_slabs();
   void migrate_points(bool to_any_rank);

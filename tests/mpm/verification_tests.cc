@@ -298,3 +298,31 @@ TEST(MpmVerification, AFailedMaterialUpdateNamesThePointThatFailed)
   EXPECT_EQ(result.failed_point, 1234);
   EXPECT_NE(result.failure_message.find("det F"), std::string::npos) << result.failure_message;
 }
+
+// Rigid bodies do not obey face conditions: one reaching a fixed face stops the run naming
+// the body and the face, instead of passing through it (issue 25's oblique impact).
+TEST(MpmVerification, ARigidBodyReachingAFixedFaceStopsTheRun)
+{
+  mpm::SceneParameters scene = test::empty_scene(Vector3::Zero(), Vector3(12e-3, 8e-3, 8e-3), 1e-3);
+  using F = mpm::FaceCondition;
+  scene.domain_faces = {{F::free, F::fixed, F::free, F::free, F::free, F::free}};
+  scene.materials.push_back(test::rigid_material("steel"));
+  mpm::BodyParameters ball = test::sphere_body("ball", "steel", Vector3(6e-3, 4e-3, 4e-3), 2e-3, 8000.0, 2);
+  ball.initial_velocity = Vector3(50, 0, 0);
+  scene.bodies.push_back(ball);
+  scene.end_time = 1e-3;
+  mpm::Solver solver(scene);
+  std::string message;
+  try
+  {
+    while (!solver.finished())
+      solver.advance();
+  }
+  catch (const mpm::BlowUp& e)
+  {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("rigid body 'ball' reached the fixed x+ face"), std::string::npos) << message;
+  // Its leading point crossed x = 12 mm within the last step: about (12 - 8) mm / 50 m/s.
+  EXPECT_NEAR(solver.time(), 4e-3 / 50.0, 2 * solver.last_time_step() + 0.5e-3 / 50.0);
+}
