@@ -10,6 +10,7 @@
 #include "simulator/history_writer.h"
 #include "simulator/mesh_series.h"
 #include "simulator/particle_series.h"
+#include "simulator/scene_warnings.h"
 #include "simulator/stop_signals.h"
 
 #include <chrono>
@@ -47,21 +48,6 @@ std::vector<std::unique_ptr<Postprocessor>> postprocessors_of(Stepper& stepper,
   return list;
 }
 
-/// benchmarks/README.md, stability: the paper scene's energy balance error passes 5 % from
-/// CFL 0.6 with the elastic-plastic bullet (1.3 % at the default 0.4).
-void warn_about_cfl(const Stepper& stepper, const deck::RunParameters& parameters,
-                    std::vector<std::string>& warnings)
-{
-  constexpr double largest_tested_cfl = 0.5;
-  if (stepper.mpm_side() == nullptr || parameters.scene.cfl <= largest_tested_cfl)
-    return;
-  std::ostringstream message;
-  message << "Time/CFL = " << parameters.scene.cfl << " is above " << largest_tested_cfl
-          << ": in the stability sweep (benchmarks/README.md) the paper scene gains more than "
-             "5 % energy from CFL 0.6 on; check energy.balance_error or use 0.4";
-  warnings.push_back(message.str());
-}
-
 class WallClock
 {
 public:
@@ -83,7 +69,7 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
   stepper.log_scene(directory);
 
   analysis::RunTotals totals;
-  warn_about_cfl(stepper, parameters, totals.warnings);
+  totals.warnings = scene_warnings(parameters, stepper.mpm_side() != nullptr);
   for (const std::string& w : totals.warnings)
     directory.warn(w);
 

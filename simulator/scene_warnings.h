@@ -1,0 +1,14 @@
+// Warnings a run gives before its first step about a scene that will run but whose answer
+// may mislead: a CFL beyond the tested range, a target narrower than the projectile.
+#pragma once
+
+#include "deck/run_parameters.h"
+
+#include <string>
+#include <vector>
+
+namespace vulnus::simulator
+{
+/// `has_mpm_side`: the CFL warning concerns the MPM step only.
+std::vector<std::string> scene_warnings(const deck::RunParameters& parameters, bool has_mpm_side);
+} // namespace vulnus::simulator
