@@ -188,6 +188,7 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
   result.contact_force.assign(n_bodies, Vector3::Zero());
   result.contact_dissipation = 0.0;
   result.n_contact_nodes = 0;
+  result.rigid_meeting_node = -1;
   if (!s.contact)
     return;
   double dissipation = 0.0;
@@ -206,6 +207,21 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
         n_with_mass += data[b].mass > s.mass_tolerance;
       if (n_with_mass < 2)
         continue;
+      std::size_t rigid_present[2] = {0, 0}, n_rigid = 0;
+      for (std::size_t b = 0; b < n_bodies; ++b)
+        if (data[b].mass > s.mass_tolerance && s.body_is_rigid[b] && n_rigid++ < 2)
+          rigid_present[n_rigid - 1] = b;
+      if (n_rigid >= 2)
+      {
+#pragma omp critical
+        if (result.rigid_meeting_node < 0 || keys[node] < result.rigid_meeting_node)
+        {
+          result.rigid_meeting_node = keys[node];
+          result.rigid_meeting_bodies[0] = rigid_present[0];
+          result.rigid_meeting_bodies[1] = rigid_present[1];
+        }
+        continue;
+      }
       Vector3* v_new = &fields.velocity_new[node * n_bodies];
       // Sums over owned nodes only, so that ranks sharing a node count it once.
       const bool owned = !s.owns_node || s.owns_node(keys[node]);

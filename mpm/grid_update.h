@@ -39,6 +39,10 @@ struct GridUpdateResult
   std::vector<Vector3> contact_force; ///< per body, force the others exert on it (N)
   double contact_dissipation = 0.0;   ///< kinetic energy removed by contact this step (J)
   std::size_t n_contact_nodes = 0;    ///< nodes where two or more bodies met
+  /// Two rigid bodies at one node (neither can give way: not modelled): the lowest such node
+  /// key and the pair of bodies, or -1.
+  std::int64_t rigid_meeting_node = -1;
+  std::size_t rigid_meeting_bodies[2] = {0, 0};
 };
 
 /// Computes fields.velocity (v^n) and fields.velocity_new (v^(n+1)) of every node and body,

@@ -239,6 +239,21 @@ void Solver::advance(const double cap)
   update_grid(grid, grid_settings, fields);
   lap(timings.grid_update);
   resolve_contacts(grid, grid_settings, fields, grid_result);
+  std::string rigid_meeting;
+  if (grid_result.rigid_meeting_node >= 0)
+  {
+    const Vector3 x = grid.node_position(grid_result.rigid_meeting_node);
+    std::ostringstream s;
+    s << "rigid bodies '" << parameters.bodies[grid_result.rigid_meeting_bodies[0]].name
+      << "' and '" << parameters.bodies[grid_result.rigid_meeting_bodies[1]].name
+      << "' met at step " << n_steps + 1 << ", t = " << current_time + dt << " s, at the node ("
+      << x[0] << ", " << x[1] << ", " << x[2]
+      << ") m: contact between two rigid bodies is not modelled (neither can give way, so they "
+         "would pass through each other); make one of them deformable, or keep them apart";
+    rigid_meeting = s.str();
+  }
+  if (const std::string problem = ranks.first_message(rigid_meeting); !problem.empty())
+    throw BlowUp(problem);
   reduce_contact_result();
   accumulated_contact_dissipation += grid_result.contact_dissipation;
   lap(timings.contact);

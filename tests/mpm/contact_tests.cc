@@ -179,3 +179,27 @@ TEST(MpmContact, ProximityCheckStartsContactWhenTheSurfacesTouch)
   const double without_check = first_contact_time(0.0);
   EXPECT_LT(without_check, touch - 0.5e-3);
 }
+
+// Two rigid bodies cannot give way to each other: their meeting stops the run naming both,
+// instead of letting them pass through (issue 25: a rigid bullet ended inside a rigid wall).
+TEST(MpmContact, TwoRigidBodiesMeetingStopTheRun)
+{
+  mpm::SceneParameters scene = test::rigid_ball_into_gel_slab();
+  scene.materials.push_back(test::rigid_material("wall"));
+  scene.bodies[0].material = "wall";
+  scene.bodies[0].rigid_motion = mpm::RigidMotion::prescribed;
+  mpm::Solver solver(scene);
+  std::string message;
+  try
+  {
+    while (!solver.finished())
+      solver.advance();
+  }
+  catch (const mpm::BlowUp& e)
+  {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("rigid bodies 'slab' and 'ball' met"), std::string::npos) << message;
+  // The ball (50 m/s, 0.5 mm from the wall) meets it within about 1.5 cells of travel.
+  EXPECT_LT(solver.time(), 2e-3 / 50.0);
+}
