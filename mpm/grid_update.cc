@@ -139,6 +139,23 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Ve
   }
   return dissipated;
 }
+/// Whether two rigid bodies reaching one node touch there: their mass centres seen from the
+/// node, after the step's approach, within the contact proximity distance along the normal
+/// (any shared node when the check is off).
+bool rigid_bodies_touch(const GridUpdateSettings& s, const NodeBodyData* data,
+                        const std::size_t first, const std::size_t second)
+{
+  if (!(s.contact_distance > 0.0))
+    return true;
+  const Vector3 g = data[first].mass_gradient - data[second].mass_gradient;
+  if (!(g.norm() > 0.0))
+    return true;
+  const Vector3 normal = g.normalized(); // outward of the first body
+  const Vector3 separation = data[second].mass_position / data[second].mass -
+                             data[first].mass_position / data[first].mass;
+  const double closing = (s.rigid_velocity[first] - s.rigid_velocity[second]).dot(normal);
+  return separation.dot(normal) - s.time_step * closing <= s.contact_distance;
+}
 } // namespace
 
 void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fields)
@@ -213,13 +230,14 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
           rigid_present[n_rigid - 1] = b;
       if (n_rigid >= 2)
       {
+        if (rigid_bodies_touch(s, data, rigid_present[0], rigid_present[1]))
 #pragma omp critical
-        if (result.rigid_meeting_node < 0 || keys[node] < result.rigid_meeting_node)
-        {
-          result.rigid_meeting_node = keys[node];
-          result.rigid_meeting_bodies[0] = rigid_present[0];
-          result.rigid_meeting_bodies[1] = rigid_present[1];
-        }
+          if (result.rigid_meeting_node < 0 || keys[node] < result.rigid_meeting_node)
+          {
+            result.rigid_meeting_node = keys[node];
+            result.rigid_meeting_bodies[0] = rigid_present[0];
+            result.rigid_meeting_bodies[1] = rigid_present[1];
+          }
         continue;
       }
       Vector3* v_new = &fields.velocity_new[node * n_bodies];
