@@ -189,16 +189,7 @@ TEST(MpmContact, TwoRigidBodiesMeetingStopTheRun)
   scene.bodies[0].material = "wall";
   scene.bodies[0].rigid_motion = mpm::RigidMotion::prescribed;
   mpm::Solver solver(scene);
-  std::string message;
-  try
-  {
-    while (!solver.finished())
-      solver.advance();
-  }
-  catch (const mpm::BlowUp& e)
-  {
-    message = e.what();
-  }
+  const std::string message = test::run_until_blow_up(solver);
   EXPECT_NE(message.find("rigid bodies 'slab' and 'ball' met"), std::string::npos) << message;
   // The ball (50 m/s, 0.5 mm from the wall) meets it within about 1.5 cells of travel.
   EXPECT_LT(solver.time(), 2e-3 / 50.0);

@@ -82,6 +82,20 @@ mpm::SceneParameters rigid_ball_into_gel_slab()
   return scene;
 }
 
+std::string run_until_blow_up(mpm::Solver& solver)
+{
+  try
+  {
+    while (!solver.finished())
+      solver.advance();
+  }
+  catch (const mpm::BlowUp& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
 mpm::SceneParameters empty_scene(const mpm::Vector3& lower, const mpm::Vector3& upper,
                                  const double cell_size)
 {

@@ -2,6 +2,9 @@
 #pragma once
 
 #include "mpm/scene_parameters.h"
+#include "mpm/solver.h"
+
+#include <string>
 
 namespace vulnus::test
 {
@@ -30,6 +33,9 @@ mpm::SceneParameters two_gel_spheres(double density_left, double density_right,
 /// A free rigid steel ball (radius 2.5 mm, 50 m/s along y, the projectile) about to hit a
 /// 4 mm gel slab; all faces free, end time 0.12 ms.
 mpm::SceneParameters rigid_ball_into_gel_slab();
+
+/// Advances to the end; returns the mpm::BlowUp message that stopped it, or "".
+std::string run_until_blow_up(mpm::Solver& solver);
 
 /// An empty scene over a domain with free faces and the given cell size.
 mpm::SceneParameters empty_scene(const mpm::Vector3& lower, const mpm::Vector3& upper,

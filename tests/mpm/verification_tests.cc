@@ -312,16 +312,7 @@ TEST(MpmVerification, ARigidBodyReachingAFixedFaceStopsTheRun)
   scene.bodies.push_back(ball);
   scene.end_time = 1e-3;
   mpm::Solver solver(scene);
-  std::string message;
-  try
-  {
-    while (!solver.finished())
-      solver.advance();
-  }
-  catch (const mpm::BlowUp& e)
-  {
-    message = e.what();
-  }
+  const std::string message = test::run_until_blow_up(solver);
   EXPECT_NE(message.find("rigid body 'ball' reached the fixed x+ face"), std::string::npos) << message;
   // Its leading point crossed x = 12 mm within the last step: about (12 - 8) mm / 50 m/s.
   EXPECT_NEAR(solver.time(), 4e-3 / 50.0, 2 * solver.last_time_step() + 0.5e-3 / 50.0);
