@@ -85,7 +85,7 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
                  {"dissipated_material_J", d.dissipated_energy},
                  {"dissipated_contact_J", solver.contact_dissipation()},
                  {"outflow_J", solver.removed_energy()},
-                 {"balance_error", initial > 0 ? (accounted_energy(solver, d) - initial) / initial : 0.0}};
+                 {"balance_error", relative_balance_error(accounted_energy(solver, d), initial)}};
   j["removed_points"] = solver.removed_points();
   j["warnings"] = totals.warnings;
   return j;

@@ -27,6 +27,13 @@ struct RunTotals
 /// by contact and carried out of the grid by removed points.
 double accounted_energy(const mpm::Solver& solver, const mpm::SceneDiagnostics& d);
 
+/// (energy - initial) / initial, 0 for a scene that starts without energy: the energy
+/// balance error of history.csv, summary.json and the energy guard.
+inline double relative_balance_error(const double energy, const double initial)
+{
+  return initial > 0 ? (energy - initial) / initial : 0.0;
+}
+
 /// `sample`: the target's failed points and intact totals over all ranks
 /// (collect_wound_sample, complete on rank 0), `d`: the diagnostics over all ranks.
 nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,

@@ -30,6 +30,17 @@ void apply_face_conditions(const Grid& grid, const FaceConditions& faces, const 
 
 namespace
 {
+/// Separation along `normal` (the first body's outward normal) of two bodies' mass centres
+/// seen from a node, at the end of the step if nothing acted between them (`closing`: their
+/// approach speed along the normal).
+double gap_after_step(const NodeBodyData& first, const NodeBodyData& second,
+                      const Vector3& normal, const double closing, const double dt)
+{
+  const Vector3 separation =
+    second.mass_position / second.mass - first.mass_position / first.mass;
+  return separation.dot(normal) - dt * closing;
+}
+
 /// Corrects the velocities of the bodies meeting at one node. `v` holds the trial
 /// velocities of the n_bodies entries; returns the kinetic energy removed.
 double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Vector3* v,
@@ -82,15 +93,10 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Ve
   if (pair && s.contact_distance > 0.0 && s.friction_coefficient >= 0.0 &&
       pair_normal.squaredNorm() > 0.0)
   {
-    // Mass centres of the two bodies seen from this node, and their separation along the
-    // first body's outward normal at the end of the step if nothing acted between them.
     // The correction fades in linearly over a band around the contact distance, so that
     // round-off in the separation changes the result by round-off, not by a whole impulse.
-    const NodeBodyData &first = data[present[0]], &second = data[present[1]];
-    const Vector3 separation =
-      second.mass_position / second.mass - first.mass_position / first.mass;
     const double closing = (v[present[0]] - v[present[1]]).dot(pair_normal);
-    const double gap = separation.dot(pair_normal) - dt * closing;
+    const double gap = gap_after_step(data[present[0]], data[present[1]], pair_normal, closing, dt);
     const double band = s.contact_band;
     engagement = std::clamp((s.contact_distance + band - gap) / (2.0 * band), 0.0, 1.0);
     if (engagement == 0.0)
@@ -151,10 +157,9 @@ bool rigid_bodies_touch(const GridUpdateSettings& s, const NodeBodyData* data,
   if (!(g.norm() > 0.0))
     return true;
   const Vector3 normal = g.normalized(); // outward of the first body
-  const Vector3 separation = data[second].mass_position / data[second].mass -
-                             data[first].mass_position / data[first].mass;
   const double closing = (s.rigid_velocity[first] - s.rigid_velocity[second]).dot(normal);
-  return separation.dot(normal) - s.time_step * closing <= s.contact_distance;
+  return gap_after_step(data[first], data[second], normal, closing, s.time_step) <=
+         s.contact_distance;
 }
 } // namespace
 

@@ -239,20 +239,7 @@ void Solver::advance(const double cap)
   update_grid(grid, grid_settings, fields);
   lap(timings.grid_update);
   resolve_contacts(grid, grid_settings, fields, grid_result);
-  std::string rigid_meeting;
-  if (grid_result.rigid_meeting_node >= 0)
-  {
-    const Vector3 x = grid.node_position(grid_result.rigid_meeting_node);
-    std::ostringstream s;
-    s << "rigid bodies '" << parameters.bodies[grid_result.rigid_meeting_bodies[0]].name
-      << "' and '" << parameters.bodies[grid_result.rigid_meeting_bodies[1]].name
-      << "' met at step " << n_steps + 1 << ", t = " << current_time + dt << " s, at the node ("
-      << x[0] << ", " << x[1] << ", " << x[2]
-      << ") m: contact between two rigid bodies is not modelled (neither can give way, so they "
-         "would pass through each other); make one of them deformable, or keep them apart";
-    rigid_meeting = s.str();
-  }
-  if (const std::string problem = ranks.first_message(rigid_meeting); !problem.empty())
+  if (const std::string problem = ranks.first_message(rigid_meeting_problem(dt)); !problem.empty())
     throw BlowUp(problem);
   reduce_contact_result();
   accumulated_contact_dissipation += grid_result.contact_dissipation;
@@ -326,29 +313,34 @@ bool Solver::finished() const
 {
   if (current_time >= parameters.end_time * (1.0 - 1e-12))
     return true;
-  if (parameters.stop_when_projectile_exits && projectile_body >= 0 && particles.n_bodies() > 1)
-  {
-    double tail = std::numeric_limits<double>::max();
-    for (std::size_t p = particles.begin_of(projectile_body); p < particles.end_of(projectile_body); ++p)
-      tail = std::min(tail, particles.position[p].dot(flight_axis));
-    return ranks.min(tail) > exit_plane;
-  }
-  return false;
+  return stops_at_projectile_exit() && projectile_tail() > exit_plane;
+}
+
+bool Solver::stops_at_projectile_exit() const
+{
+  return parameters.stop_when_projectile_exits && projectile_body >= 0 && particles.n_bodies() > 1;
+}
+
+double Solver::projectile_tail() const
+{
+  double tail = std::numeric_limits<double>::max();
+  for (std::size_t p = particles.begin_of(projectile_body); p < particles.end_of(projectile_body); ++p)
+    tail = std::min(tail, particles.position[p].dot(flight_axis));
+  return ranks.min(tail);
 }
 
 double Solver::expected_end_time() const
 {
   const double end = parameters.end_time;
-  if (!parameters.stop_when_projectile_exits || projectile_body < 0 || particles.n_bodies() < 2)
+  if (!stops_at_projectile_exit())
     return end;
-  double tail = std::numeric_limits<double>::max(), momentum = 0.0, mass = 0.0;
+  const double tail = projectile_tail();
+  double momentum = 0.0, mass = 0.0;
   for (std::size_t p = particles.begin_of(projectile_body); p < particles.end_of(projectile_body); ++p)
   {
-    tail = std::min(tail, particles.position[p].dot(flight_axis));
     momentum += particles.mass[p] * particles.velocity[p].dot(flight_axis);
     mass += particles.mass[p];
   }
-  tail = ranks.min(tail);
   double sums[2] = {momentum, mass};
   ranks.sum(sums, 2);
   const double speed = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
@@ -468,6 +460,21 @@ void Solver::check_state() const
     throw BlowUp(problem);
 }
 
+std::string Solver::rigid_meeting_problem(const double dt) const
+{
+  if (grid_result.rigid_meeting_node < 0)
+    return {};
+  const Vector3 x = grid.node_position(grid_result.rigid_meeting_node);
+  std::ostringstream s;
+  s << "rigid bodies '" << parameters.bodies[grid_result.rigid_meeting_bodies[0]].name
+    << "' and '" << parameters.bodies[grid_result.rigid_meeting_bodies[1]].name
+    << "' met at step " << n_steps + 1 << ", t = " << current_time + dt << " s, at the node ("
+    << x[0] << ", " << x[1] << ", " << x[2]
+    << ") m: contact between two rigid bodies is not modelled (neither can give way, so they "
+       "would pass through each other); make one of them deformable, or keep them apart";
+  return s.str();
+}
+
 std::string Solver::rigid_face_problem() const
 {
   static const char* const face_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
@@ -475,19 +482,20 @@ std::string Solver::rigid_face_problem() const
   {
     if (!grid_settings.body_is_rigid[b])
       continue;
-    for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
-      for (int face = 0; face < 6; ++face)
+    for (int face = 0; face < 6; ++face)
+    {
+      const int d = face / 2;
+      const bool upper = face % 2 == 1;
+      // Only a body moving out through a constrained face: one that starts beyond it (a
+      // projectile entering through it) is not stopped by it either.
+      const double v = grid_settings.rigid_velocity[b][d];
+      if (parameters.domain_faces[face] == FaceCondition::free || (upper ? v <= 0.0 : v >= 0.0))
+        continue;
+      const double plane = upper ? parameters.domain_max[d] : parameters.domain_min[d];
+      for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
       {
-        const int d = face / 2;
-        const bool upper = face % 2 == 1;
         const double x = particles.position[p][d];
-        const bool beyond = upper ? x > parameters.domain_max[d] : x < parameters.domain_min[d];
-        if (!beyond || parameters.domain_faces[face] == FaceCondition::free)
-          continue;
-        // Only a body moving out through the face: one that starts beyond it (a projectile
-        // entering through it) is not stopped by it either.
-        const double v = grid_settings.rigid_velocity[b][d];
-        if (upper ? v <= 0.0 : v >= 0.0)
+        if (upper ? x <= plane : x >= plane)
           continue;
         std::ostringstream s;
         s << "rigid body '" << parameters.bodies[b].name << "' reached the "
@@ -499,6 +507,7 @@ std::string Solver::rigid_face_problem() const
              "make that face free, or end the run earlier";
         return s.str();
       }
+    }
   }
   return {};
 }

@@ -166,6 +166,12 @@ private:
   /// A rigid body with a point beyond a fixed or roller domain face (rigid bodies ignore face
   /// conditions, so it would pass through), described; "" when there is none. Local.
   std::string rigid_face_problem() const;
+  /// Two rigid bodies met in this step's contact pass (grid_result), described; "" when not.
+  std::string rigid_meeting_problem(double dt) const;
+  /// Whether the run ends when the projectile's tail passes the exit plane.
+  bool stops_at_projectile_exit() const;
+  /// Collective: the smallest x . flight axis of the projectile's points.
+  double projectile_tail() const;
   void plan_slabs();
   void rebalance_slabs();
   void migrate_points(bool to_any_rank);

@@ -57,15 +57,18 @@ void Checkpointer::restart(Stepper& stepper,
       (running_on == 0 ? std::string("1 process") : std::to_string(running_on) + " ranks") +
       "; restart on the same count (" +
       (written_on == 0 ? std::string("without mpirun, or -np 1") : "mpirun -np " + std::to_string(written_on)) + ")");
+  auto refuse_a_different_deck = [&](const std::string& checkpoint_deck, const std::string& which) {
+    const std::string difference = deck::first_deck_difference(
+      checkpoint_deck, parameters.resolved_deck, restart_may_change);
+    if (!difference.empty())
+      throw RestartRefused("--restart: the deck does not match the checkpoint " + which + ": " +
+                           difference + ". Restart with the run's deck (" +
+                           directory.file("deck_used.prm") + ") and its --set entries");
+  };
   // The deck first: a restart without an earlier --set would otherwise fail to restore every
   // checkpoint and call them all damaged.
   if (const std::string deck = store.newest_deck(); !deck.empty())
-    if (const std::string difference = deck::first_deck_difference(
-          deck, parameters.resolved_deck, restart_may_change);
-        !difference.empty())
-      throw RestartRefused("--restart: the deck does not match the newest checkpoint: " +
-                           difference + ". Restart with the run's deck (" +
-                           directory.file("deck_used.prm") + ") and its --set entries");
+    refuse_a_different_deck(deck, "(the newest)");
   std::string used;
   const io::RunProgress progress =
     store.read_newest([&](std::istream& in) { stepper.restore(in); },
@@ -75,12 +78,7 @@ void Checkpointer::restart(Stepper& stepper,
     throw std::runtime_error("--restart: the ranks' newest complete checkpoints are of different "
                              "steps (one rank's newest is damaged); remove the newer ones under " +
                              directory.file("checkpoints") + " so that every rank has the same newest step");
-  const std::string difference = deck::first_deck_difference(
-    progress.resolved_deck, parameters.resolved_deck, restart_may_change);
-  if (!difference.empty())
-    throw RestartRefused("--restart: the deck does not match the checkpoint '" + used +
-                             "': " + difference + ". Restart with the run's deck (" +
-                             directory.file("deck_used.prm") + ")");
+  refuse_a_different_deck(progress.resolved_deck, "'" + used + "'"); // an older one was used
   directory.write_deck_used(parameters.resolved_deck);
   for (const auto& p : postprocessors)
     p->resume(stepper, progress);

@@ -33,9 +33,12 @@ std::optional<std::string> EnergyGuard::check(const Stepper& stepper, const bool
     return std::nullopt;
   const double error = stepper.energy_balance_error(); // collective
   if (bounds.limit > 0.0 && std::abs(error) > bounds.limit)
-    throw mpm::BlowUp(describe(stepper, error, false) + "; it passed Time/Energy balance limit = " +
-                      [&] { std::ostringstream o; o << bounds.limit; return o.str(); }() +
-                      ", so the run's answer cannot be trusted");
+  {
+    std::ostringstream o;
+    o << describe(stepper, error, false) << "; it passed Time/Energy balance limit = "
+      << bounds.limit << ", so the run's answer cannot be trusted";
+    throw mpm::BlowUp(o.str());
+  }
   if (warned || bounds.warning <= 0.0 || !(std::abs(error) > bounds.warning))
     return std::nullopt;
   warned = true;

@@ -38,7 +38,7 @@ std::vector<double> hybrid_history_row(const coupling::HybridSolver& solver,
   for (const double value :
        {double(ledger.fe_steps), f.kinetic_energy, f.strain_energy, f.dissipated_energy,
         double(f.n_failed_points), energy,
-        initial_energy > 0 ? (energy - initial_energy) / initial_energy : 0.0, momentum[0],
+        analysis::relative_balance_error(energy, initial_energy), momentum[0],
         momentum[1], momentum[2], ledger.mpm_work, ledger.fe_work, ledger.energy_error()})
     row.push_back(value);
   return row;

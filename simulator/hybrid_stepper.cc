@@ -76,7 +76,7 @@ double HybridStepper::energy_balance_error() const
 {
   const double energy = hybrid_scene_energy(solver, solver.mpm().diagnostics(),
                                             solver.fe().diagnostics());
-  return initial_energy > 0 ? (energy - initial_energy) / initial_energy : 0.0;
+  return analysis::relative_balance_error(energy, initial_energy);
 }
 
 std::string HybridStepper::energy_error_causes() const
@@ -138,7 +138,7 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
   summary["energy"]["dissipated_J"] =
     m.dissipated_energy + mpm_side.contact_dissipation() + fe.dissipated_energy;
   summary["energy"]["balance_error"] =
-    initial_energy > 0 ? (energy - initial_energy) / initial_energy : 0.0;
+    analysis::relative_balance_error(energy, initial_energy);
   summary["hybrid"] = {{"scheme", scheme_name(split.hybrid.scheme)},
                        {"fe_integrator", integrator_name(split.fe.integrator)},
                        {"mpm_steps", ledger.mpm_steps},

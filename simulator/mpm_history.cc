@@ -21,7 +21,8 @@ std::vector<std::string> mpm_history_columns()
 std::vector<double> mpm_history_row(const mpm::Solver& solver, const mpm::SceneDiagnostics& d)
 {
   const double initial = solver.initial_energy();
-  const double balance = initial > 0 ? (analysis::accounted_energy(solver, d) - initial) / initial : 0.0;
+  const double balance =
+    analysis::relative_balance_error(analysis::accounted_energy(solver, d), initial);
   mpm::Vector3 position = mpm::Vector3::Constant(NAN), velocity = position, force = position;
   if (solver.projectile() >= 0)
   {

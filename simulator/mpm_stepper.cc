@@ -108,9 +108,8 @@ std::string MpmStepper::progress() const
 
 double MpmStepper::energy_balance_error() const
 {
-  const double initial = solver.initial_energy();
-  return initial > 0 ? (analysis::accounted_energy(solver, solver.diagnostics()) - initial) / initial
-                     : 0.0;
+  return analysis::relative_balance_error(
+    analysis::accounted_energy(solver, solver.diagnostics()), solver.initial_energy());
 }
 
 std::string MpmStepper::energy_error_causes() const
