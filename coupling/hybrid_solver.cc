@@ -43,8 +43,9 @@ HybridSolver::HybridSolver(const HybridScene& scene, MPI_Comm communicator,
     return v;
   });
   match_interface_nodes(communicator);
-  velocity_start.assign(keys.size(), mpm::Vector3::Zero());
-  velocity_end.assign(keys.size(), mpm::Vector3::Zero());
+  for (std::vector<mpm::Vector3>* v :
+       {&velocity_start, &velocity_end, &created, &correction})
+    v->assign(keys.size(), mpm::Vector3::Zero());
   mpm_solver->share_nodes({split.coupled_body, keys, this});
 }
 
@@ -175,16 +176,12 @@ void HybridSolver::predict_interface(const double dt, const mpm::SharedNodeState
     const mpm::Vector3& v_node = fe_velocity[k];
     const mpm::Vector3& f_fe = fe_force[k];
     const double m_fe = fe_mass[k];
-    mpm::Vector3 v = v_node + dt * (mpm_side.force[k] + f_fe) / (mpm_side.mass[k] + m_fe);
+    mpm::Vector3 v = v_node + (dt * (mpm_side.force[k] + f_fe) + correction[k]) /
+                                (mpm_side.mass[k] + m_fe);
     // Supports of the grid faces hold the shared node on both sides.
     mpm::apply_face_conditions(grid, split.mpm.domain_faces, keys[k], v);
     velocity_start[k] = v_node;
     velocity_end[k] = v;
-    // Force the interface exerts on the FE node and its work over the FE step.
-    const mpm::Vector3 f_interface = m_fe * (v - v_node) / dt - f_fe;
-    const mpm::Vector3 v_step = staggered ? v : mpm::Vector3(0.5 * (v + v_node));
-    book.fe_work += dt * f_interface.dot(v_step);
-    book.fe_impulse += dt * f_interface;
   }
 }
 
@@ -196,6 +193,36 @@ void HybridSolver::advance_fe(const double dt)
   fe_solver->set_interface_velocities(targets);
   fe_solver->advance(dt);
   ++book.fe_steps;
+
+  // The FE body received its interface nodes' momentum change minus the impulse it
+  // transmitted to them (its integrator's time integral), and the work of both.
+  const bool staggered = split.fe.staggered_velocity;
+  std::vector<double> packed(3 * keys.size(), 0.0);
+  const std::vector<dealii::Tensor<1, 3>>& transmitted = fe_solver->interface_impulses_of_last_step();
+  for (std::size_t i = 0; i < transmitted.size(); ++i)
+    for (unsigned int c = 0; c < 3; ++c)
+      packed[3 * fe_node_index[i] + c] = transmitted[i][c];
+  mpm_solver->rank_group().sum(packed.data(), static_cast<int>(packed.size()));
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    const mpm::Vector3 impulse = fe_mass[k] * (velocity_end[k] - velocity_start[k]) -
+                                 mpm::Vector3(packed[3 * k], packed[3 * k + 1], packed[3 * k + 2]);
+    const mpm::Vector3 v_step =
+        staggered ? velocity_end[k] : mpm::Vector3(0.5 * (velocity_end[k] + velocity_start[k]));
+    book.fe_work += impulse.dot(v_step);
+    book.fe_impulse += impulse;
+    created[k] += impulse;
+  }
+}
+
+void HybridSolver::start_window_correction()
+{
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    // What the last window created beyond the correction it applied is taken back now.
+    correction[k] = -(created[k] - correction[k]);
+    created[k].setZero();
+  }
 }
 
 void HybridSolver::book_mpm_side(const double dt, const mpm::SharedNodeState& mpm_side,
@@ -210,6 +237,7 @@ void HybridSolver::book_mpm_side(const double dt, const mpm::SharedNodeState& mp
         mpm_side.mass[k] * (v_end[k] - v_start[k]) / dt - mpm_side.force[k];
     book.mpm_work -= dt * reaction.dot(v_end[k]);
     book.mpm_impulse += dt * reaction;
+    created[k] += dt * reaction;
   }
 }
 
@@ -219,6 +247,7 @@ void HybridSolver::exchange(const double time, const double dt,
 {
   if (split.hybrid.scheme == CouplingScheme::same_step)
   {
+    start_window_correction();
     predict_interface(dt, mpm_side);
     advance_fe(dt);
     v_start = velocity_start;
@@ -230,6 +259,7 @@ void HybridSolver::exchange(const double time, const double dt,
     const bool first_substep = time <= window_start + 1e-9 * window;
     if (first_substep)
     {
+      start_window_correction();
       predict_interface(window, mpm_side);
       advance_fe(window);
     }
@@ -255,10 +285,19 @@ void HybridSolver::exchange(const double time, const double dt,
   book_mpm_side(dt, mpm_side, v_start, v_end);
 }
 
+Eigen::Vector3d HybridSolver::impulse_in_transit() const
+{
+  // Before the next window starts: what the last one created, to be taken back.
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    sum -= created[k] - correction[k];
+  return sum;
+}
+
 Eigen::Vector3d HybridSolver::total_momentum() const
 {
   const fem::FeDiagnostics d = fe_solver->diagnostics();
-  return mpm_solver->diagnostics().momentum + to_eigen(d.momentum);
+  return mpm_solver->diagnostics().momentum + to_eigen(d.momentum) + impulse_in_transit();
 }
 
 double HybridSolver::fe_mechanical_energy() const

@@ -11,6 +11,13 @@
 //               interpolated in time (constant for the explicit staggered velocity, linear
 //               for the implicit end-of-step velocities, evaluated at substep midpoints), so
 //               both sides' interface displacements agree at every window end.
+// Impulse correction: over a window the MPM substeps' forces differ from the first one the
+// prediction used, and the FE body transmits over its step what its integrator integrates
+// (not its start force alone). Both are measured: the FE side books the impulse its body
+// really transmitted, the MPM side the reactions of every substep. The momentum a window
+// created, node by node, is taken back in the next window's prediction, so momentum is
+// exchanged exactly, one window late (the same-step scheme with the explicit far field
+// creates none).
 #pragma once
 
 #include "coupling/decomposition.h"
@@ -58,8 +65,13 @@ public:
   /// node (at the start; 0 on one rank).
   std::size_t n_interface_nodes_across_ranks() const { return fe_nodes_on_other_mpm_ranks; }
 
-  /// Total momentum of both sides, kg m/s (FE with its lumped mass).
+  /// Total momentum of both sides, kg m/s (FE with its lumped mass), plus the impulse the
+  /// next window gives back (impulse_in_transit): constant to round-off at window ends.
   Eigen::Vector3d total_momentum() const;
+  /// Momentum the last closed window created, still to be taken back, kg m/s (minus).
+  Eigen::Vector3d impulse_in_transit() const;
+  /// True between MPM steps that end an FE window (always for the same-step scheme).
+  bool at_window_end() const { return !window_open; }
   /// Kinetic + strain energy of the FE side, J.
   double fe_mechanical_energy() const;
 
@@ -77,6 +89,8 @@ private:
   /// node's own (the FE interface) velocity.
   void predict_interface(double dt, const mpm::SharedNodeState& mpm_side);
   void advance_fe(double dt);
+  /// Starts a window: the momentum the last one created becomes the correction.
+  void start_window_correction();
   void book_mpm_side(double dt, const mpm::SharedNodeState& mpm_side,
                      const std::vector<mpm::Vector3>& velocity_start,
                      const std::vector<mpm::Vector3>& velocity_end);
@@ -97,6 +111,8 @@ private:
   std::vector<mpm::Vector3> velocity_start; ///< FE interface velocity at the window start
   std::vector<mpm::Vector3> velocity_end;   ///< at the window end (or over it, staggered)
   std::vector<mpm::Vector3> fe_velocity, fe_force; ///< FE interface state, by key
+  std::vector<mpm::Vector3> created;    ///< momentum the current window created, by key
+  std::vector<mpm::Vector3> correction; ///< impulse applied in the current window, by key
   std::vector<dealii::Tensor<1, 3>> targets;
 };
 } // namespace vulnus::coupling

@@ -12,10 +12,13 @@ struct InterfaceLedger
   /// -R . v_end dt, R = m_mpm (v_end - v_start)/dt - f_mpm the force the interface exerts on
   /// the MPM side of the shared nodes.
   double mpm_work = 0.0;
-  /// Work the FE side received through the interface, J: sum over FE steps of F_fe . v dt.
+  /// Work the FE side received through the interface, J: on the FE share of the nodes
+  /// m_fe (v_end - v_start) . v_end at every MPM step, on the rest of the body minus the
+  /// transmitted impulse times the node's mean velocity over every FE step.
   double fe_work = 0.0;
   /// Momentum the interface gave the MPM side and the FE side since the start, kg m/s; their
-  /// sum is the momentum the coupling created (zero for the same-step scheme).
+  /// sum plus HybridSolver::impulse_in_transit is the momentum the coupling created (zero to
+  /// round-off).
   Eigen::Vector3d mpm_impulse = Eigen::Vector3d::Zero();
   Eigen::Vector3d fe_impulse = Eigen::Vector3d::Zero();
   unsigned long fe_steps = 0;

@@ -36,6 +36,21 @@ struct DirichletDof
   DirichletSource source;
   unsigned int index;
   dealii::Point<3> position;
+  /// Boundary id whose condition constrains the dof (interface: boundary_ids::interface).
+  dealii::types::boundary_id face = 0;
+};
+
+/// Forces across the constrained boundary at one state, N (this rank's nodes):
+///   interface[n]  what the rest of the body transmits to interface node n,
+///                 X = f_ext - f_int - ((M a) - m a) on the node (lumped mass: f_ext - f_int);
+///   supports[b]   what the supports of face b exert on the body, R = M a - f_ext + f_int
+///                 summed over the face's constrained dofs.
+/// Over a step the body's momentum changes by the time integrals of the supports' R and the
+/// interface's m a - X (docs/DESIGN.md section 6).
+struct BoundaryForces
+{
+  std::vector<dealii::Tensor<1, 3>> interface;
+  std::array<dealii::Tensor<1, 3>, n_slab_faces + 1> supports;
 };
 
 /// Sums of one pass over the quadrature points (local to this rank).
@@ -81,13 +96,15 @@ struct FarFieldSolver::Data
   std::vector<NodeRecord> owned_nodes;
   std::vector<NodeRecord> interface_nodes;
   std::vector<dealii::Tensor<1, 3>> interface_velocity_targets;
-  std::vector<dealii::Tensor<1, 3>> interface_forces;
 
   // Owned vectors: displacement, velocity, acceleration, lumped mass (condensed), inverse
   // lumped mass (zero on constrained dofs), internal and external forces without constraints.
   Vector displacement, velocity, acceleration;
   Vector lumped_mass, inverse_mass;
   Vector internal_force_raw, external_force_raw;
+  /// Implicit: (M a)_i - m_i a_i at the last Newton state, consistent minus lumped inertia
+  /// (zero for the explicit lumped mass).
+  Vector inertia_coupling_raw;
   Vector residual; ///< explicit: condensed f_ext - f_int
   // Ghosted copy for cell loops.
   Vector ghosted;
@@ -100,6 +117,12 @@ struct FarFieldSolver::Data
   std::vector<unsigned char> cell_failure;       ///< max flag over the cell's points
   std::vector<double> cell_wave_speed;           ///< m/s
   std::vector<double> cell_size;                 ///< smallest vertex distance / degree, m
+
+  /// Boundary forces at the current state and their integrals: over the last step for the
+  /// interface nodes, since the start (this rank) for the supports.
+  BoundaryForces boundary_now;
+  std::vector<dealii::Tensor<1, 3>> interface_impulse_last_step;
+  std::array<dealii::Tensor<1, 3>, n_slab_faces + 1> support_impulse;
 
   EvaluationSums last_sums;
   FePhaseTimes phase_times;
@@ -133,11 +156,21 @@ struct FarFieldSolver::Data
   /// Assembles f_ext(t) into external_force_raw (tractions and interface forces) and adds
   /// it to *condensed when non-null.
   void assemble_external_forces(double t, Vector* condensed);
+  /// The boundary forces at the current state (from the raw force vectors).
+  BoundaryForces boundary_forces() const;
+  /// After a step of dt: integrates the boundary forces over it with the integrator's weights
+  /// (staggered central difference: the start state; otherwise (1 - gamma) start + gamma end)
+  /// and makes the end state current.
+  void integrate_boundary_forces(double dt);
   /// External power v . F_out (see FeDiagnostics::external_work).
   double external_power() const;
   /// Kinetic energy 1/2 v.M v: lumped mass (explicit) or consistent mass (implicit).
   double kinetic_energy() const;
 };
+
+/// The Newmark velocity weight gamma of the configured integrator (1/2 for the explicit and the
+/// average-acceleration steps).
+double integrator_gamma(const FeSceneParameters& prm);
 
 /// Throws std::runtime_error with `message` on every rank if `failed` is true on any rank.
 void throw_if_any(bool failed, const std::string& message, MPI_Comm comm);

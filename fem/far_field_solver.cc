@@ -163,7 +163,7 @@ std::map<types::global_dof_index, DirichletCandidate> collect_face_dofs_and_supp
             if (d.hanging_constraints.is_constrained(dof))
               continue;
             DirichletCandidate candidate;
-            candidate.dof = {dof, component, DirichletSource::zero, 0u, Point<3>()};
+            candidate.dof = {dof, component, DirichletSource::zero, 0u, Point<3>(), b};
             if (b == boundary_ids::interface)
             {
               if (!interface_driven)
@@ -219,7 +219,6 @@ NodeOfDof collect_interface_nodes(Data& d, const NodeOfDof& node_of_dof)
       d.interface_nodes.push_back(node);
     }
   d.interface_velocity_targets.assign(d.interface_nodes.size(), Tensor<1, 3>());
-  d.interface_forces.assign(d.interface_nodes.size(), Tensor<1, 3>());
 
   return interface_index_of_dof;
 }
@@ -253,7 +252,7 @@ void allocate_vectors(Data& d)
 {
   for (Data::Vector* v :
        {&d.displacement, &d.velocity, &d.acceleration, &d.lumped_mass, &d.inverse_mass,
-        &d.internal_force_raw, &d.external_force_raw, &d.residual})
+        &d.internal_force_raw, &d.external_force_raw, &d.inertia_coupling_raw, &d.residual})
     v->reinit(d.owned_dofs, d.comm);
   d.ghosted.reinit(d.owned_dofs, d.relevant_dofs, d.comm);
 }
@@ -334,6 +333,9 @@ void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modi
   d.velocity.compress(VectorOperation::insert);
   evaluate_explicit_forces(0.0);
   d.last_power = d.external_power();
+  d.boundary_now = d.boundary_forces();
+  d.interface_impulse_last_step.assign(d.interface_nodes.size(), Tensor<1, 3>());
+  d.support_impulse = {};
 }
 
 void FarFieldSolver::set_initial_velocity(const VectorFunction& velocity)
@@ -380,11 +382,13 @@ void FarFieldSolver::advance(const double dt)
   if (data->is_implicit())
   {
     advance_implicit(dt);
+    data->integrate_boundary_forces(dt);
     return;
   }
   const auto start = std::chrono::steady_clock::now();
   const double forces_before = data->phase_times.internal_forces;
   advance_explicit(dt);
+  data->integrate_boundary_forces(dt);
   FePhaseTimes& t = data->phase_times;
   const double step_seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -495,30 +499,26 @@ std::vector<double> FarFieldSolver::interface_lumped_masses() const
   return masses;
 }
 
-std::vector<Tensor<1, 3>> FarFieldSolver::interface_nodal_forces() const
+const std::vector<Tensor<1, 3>>& FarFieldSolver::interface_nodal_forces() const
 {
-  std::vector<Tensor<1, 3>> forces;
-  for (const NodeRecord& node : data->interface_nodes)
-  {
-    Tensor<1, 3> f;
-    for (unsigned int c = 0; c < 3; ++c)
-      f[c] = data->external_force_raw(node.dofs[c]) - data->internal_force_raw(node.dofs[c]);
-    forces.push_back(f);
-  }
-  return forces;
+  return data->boundary_now.interface;
+}
+
+const std::vector<Tensor<1, 3>>& FarFieldSolver::interface_impulses_of_last_step() const
+{
+  return data->interface_impulse_last_step;
 }
 
 std::vector<Tensor<1, 3>> FarFieldSolver::interface_reactions() const
 {
   std::vector<Tensor<1, 3>> reactions;
-  for (const NodeRecord& node : data->interface_nodes)
+  for (std::size_t n = 0; n < data->interface_nodes.size(); ++n)
   {
-    Tensor<1, 3> r;
+    Tensor<1, 3> r = -data->boundary_now.interface[n];
     for (unsigned int c = 0; c < 3; ++c)
     {
-      const auto i = node.dofs[c];
-      r[c] = data->lumped_mass(i) * data->acceleration(i) + data->internal_force_raw(i) -
-             data->external_force_raw(i);
+      const auto i = data->interface_nodes[n].dofs[c];
+      r[c] += data->lumped_mass(i) * data->acceleration(i);
     }
     reactions.push_back(r);
   }
@@ -532,15 +532,6 @@ void FarFieldSolver::set_interface_velocities(const std::vector<Tensor<1, 3>>& v
   AssertThrow(velocities.size() == data->interface_nodes.size(),
               ExcMessage("set_interface_velocities: one velocity per interface node expected"));
   data->interface_velocity_targets = velocities;
-}
-
-void FarFieldSolver::set_interface_forces(const std::vector<Tensor<1, 3>>& forces)
-{
-  AssertThrow(data->prm.interface_condition == InterfaceCondition::force_driven,
-              ExcMessage("set_interface_forces: the interface is not force driven"));
-  AssertThrow(forces.size() == data->interface_nodes.size(),
-              ExcMessage("set_interface_forces: one force per interface node expected"));
-  data->interface_forces = forces;
 }
 
 FeDiagnostics FarFieldSolver::diagnostics() const
@@ -565,6 +556,7 @@ FeDiagnostics FarFieldSolver::diagnostics() const
       reaction[component] += d.lumped_mass(dof) * d.acceleration(dof) + d.internal_force_raw(dof) -
                              d.external_force_raw(dof);
     r.face_reactions[b] = Utilities::MPI::sum(reaction, d.comm);
+    r.support_impulses[b] = Utilities::MPI::sum(d.support_impulse[b], d.comm);
   }
   r.n_failed_points = d.n_failed_points;
   double c_max = 0.0;

@@ -45,6 +45,9 @@ struct FeDiagnostics
   /// boundary ids (x-, x+, y-, y+, z-, z+, interface). R = f_int + M a - f_ext on the
   /// face's nodes (inertia with the lumped mass).
   std::array<dealii::Tensor<1, 3>, n_slab_faces + 1> face_reactions;
+  /// Impulse the supports of each face exerted on the body since t = 0 (the time integral of
+  /// their reactions with the integrator's weights; zero on free faces), N s.
+  std::array<dealii::Tensor<1, 3>, n_slab_faces + 1> support_impulses;
   unsigned long long n_failed_points = 0; ///< quadrature points with any failure flag
   double max_wave_speed = 0.0;            ///< m/s over quadrature points
 };
@@ -148,16 +151,17 @@ public:
   const std::vector<NodeRecord>& interface_nodes() const;
   /// Lumped (row-sum) FE mass of each interface node, kg.
   std::vector<double> interface_lumped_masses() const;
-  /// Force the FE body exerts on each interface node at the current state, N:
-  /// f_ext - f_int on the node (what the MPM side adds to its grid node in a shared-node step).
-  std::vector<dealii::Tensor<1, 3>> interface_nodal_forces() const;
+  /// Force the rest of the FE body transmits to each interface node at the current state, N:
+  /// f_ext - f_int - ((M a) - m a) on the node (f_ext - f_int with the lumped mass).
+  const std::vector<dealii::Tensor<1, 3>>& interface_nodal_forces() const;
+  /// The time integral of interface_nodal_forces over the last step with the integrator's
+  /// weights, N s: minus the momentum the rest of the body received through each node.
+  const std::vector<dealii::Tensor<1, 3>>& interface_impulses_of_last_step() const;
   /// Force that had to act on the FE body at each interface node to give it its motion,
-  /// R = M a + f_int - f_ext (lumped inertia), N; the MPM side feels -R.
+  /// R = m a - interface_nodal_forces, N; the MPM side feels -R.
   std::vector<dealii::Tensor<1, 3>> interface_reactions() const;
   /// velocity_driven: velocities of the interface nodes at the end of the next step.
   void set_interface_velocities(const std::vector<dealii::Tensor<1, 3>>& velocities);
-  /// force_driven: nodal forces on the interface nodes during the next step(s), N.
-  void set_interface_forces(const std::vector<dealii::Tensor<1, 3>>& forces);
 
   /// Writes fe_mesh_NNNNN.h5 into directory and rewrites directory/fe_mesh.xdmf with all
   /// outputs so far (displacement, velocity, cell stress, failure flag, rank).

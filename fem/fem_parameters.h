@@ -56,12 +56,10 @@ struct FaceParameters
 /// What the coupling does on the surface of the hole (the MPM zone).
 ///   free            traction free (pure FE scene)
 ///   velocity_driven the interface velocities are Dirichlet values set by the caller
-///   force_driven    the interface nodes receive nodal forces set by the caller
 enum class InterfaceCondition
 {
   free,
-  velocity_driven,
-  force_driven
+  velocity_driven
 };
 
 enum class TimeIntegrator

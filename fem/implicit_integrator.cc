@@ -56,6 +56,12 @@ AlphaCoefficients coefficients(const FeSceneParameters& prm)
   return c;
 }
 
+} // namespace
+
+double integrator_gamma(const FeSceneParameters& prm) { return coefficients(prm).gamma; }
+
+namespace
+{
 void initialize_implicit(FarFieldSolver::Data& d)
 {
   d.implicit = std::make_shared<ImplicitData>();
@@ -87,7 +93,8 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
   for (unsigned int i = 0; i < n_dofs; ++i)
     component[i] = d.fe.system_to_component_index(i).first;
   std::vector<Tensor<1, 3>> grads(n_dofs);
-  std::vector<double> values(n_dofs), u_local(n_dofs), a_local(n_dofs), f_values(n_dofs);
+  std::vector<double> values(n_dofs), u_local(n_dofs), a_local(n_dofs), f_values(n_dofs),
+      inertia_values(n_dofs);
   FullMatrix<double> cell_matrix(n_dofs, n_dofs);
   dealii::Vector<double> cell_rhs(n_dofs);
   materials::PointResponse response;
@@ -98,6 +105,7 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
   im.matrix = 0.0;
   im.rhs = 0.0;
   d.internal_force_raw = 0.0;
+  d.inertia_coupling_raw = 0.0;
   for (const auto& cell : d.dof_handler.active_cell_iterators())
   {
     if (!cell->is_locally_owned())
@@ -114,6 +122,7 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
     cell_matrix = 0.0;
     cell_rhs = 0.0;
     std::fill(f_values.begin(), f_values.end(), 0.0);
+    std::fill(inertia_values.begin(), inertia_values.end(), 0.0);
     Tensor<2, 3> stress_sum;
     double volume = 0.0, c_max = 0.0;
     unsigned char flags = 0;
@@ -153,6 +162,7 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
         const unsigned int ci = component[i];
         const double f_int = (P[ci] * grads[i]) * JxW;
         f_values[i] += f_int;
+        inertia_values[i] += rho_JxW * values[i] * a_q[ci];
         cell_rhs(i) -= f_int + rho_JxW * values[i] * a_q[ci];
         // t_iL = sum_J g_i[J] dP_{ci J}/dF_{cj L}, then K_ij = t_i(cj, :) . g_j.
         double t_i[3][3];
@@ -186,12 +196,18 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
     d.cell_failure[k] = flags;
     d.cell_wave_speed[k] = c_max;
     d.internal_force_raw.add(dofs, f_values);
+    d.inertia_coupling_raw.add(dofs, inertia_values);
     d.increment_constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, im.matrix,
                                                        im.rhs);
   }
   im.matrix.compress(VectorOperation::add);
   im.rhs.compress(VectorOperation::add);
   d.internal_force_raw.compress(VectorOperation::add);
+  d.inertia_coupling_raw.compress(VectorOperation::add);
+  // Consistent minus lumped inertia: (M a)_i - m_i a_i.
+  for (const auto i : d.owned_dofs)
+    d.inertia_coupling_raw(i) -= d.lumped_mass(i) * im.a_alpha(i);
+  d.inertia_coupling_raw.compress(VectorOperation::insert);
   throw_if_any(inverted, message, d.comm);
   return sums;
 }

@@ -170,14 +170,6 @@ void FarFieldSolver::Data::assemble_external_forces(const double t, Vector* cond
             hanging_constraints.distribute_local_to_global(f_local, dofs, *condensed);
         }
   }
-  if (prm.interface_condition == InterfaceCondition::force_driven)
-    for (unsigned int n = 0; n < interface_nodes.size(); ++n)
-      for (unsigned int c = 0; c < 3; ++c)
-      {
-        external_force_raw(interface_nodes[n].dofs[c]) += interface_forces[n][c];
-        if (condensed != nullptr)
-          (*condensed)(interface_nodes[n].dofs[c]) += interface_forces[n][c];
-      }
   external_force_raw.compress(VectorOperation::add);
   if (condensed != nullptr)
     condensed->compress(VectorOperation::add);

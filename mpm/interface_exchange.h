@@ -1,6 +1,6 @@
 // Hook through which a partner solver (the FE far field) shares grid nodes with the MPM step
-// (docs/DESIGN.md section 6): after the grid update the MPM solver reports its own mass, momentum
-// and force at the shared nodes; the partner returns the node's velocity at the start and at
+// (docs/DESIGN.md section 6): after the grid update the MPM solver reports its own mass and
+// force at the shared nodes; the partner returns the node's velocity at the start and at
 // the end of the step. A shared node carries its own velocity (like an FE node): the points
 // receive the increment v_end - v_start (FLIP; a coupled solver always uses FLIP, since the
 // exchange books exactly that impulse) and move with v_end.
@@ -19,9 +19,8 @@ using Vector3 = Eigen::Vector3d;
 /// distributed run summed over the ranks (the same on every rank).
 struct SharedNodeState
 {
-  std::vector<double> mass;      ///< kg; 0 where no point of the coupled body reaches the node
-  std::vector<Vector3> momentum; ///< kg m/s, projected from the points (v^n = momentum / mass)
-  std::vector<Vector3> force;    ///< N, internal force plus gravity on the node
+  std::vector<double> mass;   ///< kg; 0 where no point of the coupled body reaches the node
+  std::vector<Vector3> force; ///< N, internal force plus gravity on the node
 };
 
 class InterfacePartner

@@ -1,5 +1,4 @@
-// The solver's side of the node sharing with a partner solver: gathers the MPM mass, momentum
-// and force at the shared nodes after the grid update (summed over the ranks, a node on a cut
+// The solver's side of the node sharing with a partner solver: gathers the MPM mass and force at the shared nodes after the grid update (summed over the ranks, a node on a cut
 // plane counted once), and imposes the returned velocities at the nodes this rank holds.
 #include "mpm/solver.h"
 
@@ -24,7 +23,6 @@ void Solver::share_nodes(const SharedNodes& nodes)
   kinematics.affine = transfer.affine = false;
   const std::size_t n = nodes.keys.size();
   shared_state.mass.assign(n, 0.0);
-  shared_state.momentum.assign(n, Vector3::Zero());
   shared_state.force.assign(n, Vector3::Zero());
   shared_velocity_start.assign(n, Vector3::Zero());
   shared_velocity_end.assign(n, Vector3::Zero());
@@ -40,13 +38,11 @@ void Solver::exchange_shared_nodes(const double dt)
     if (slot < 0 || fields.data[slot * n_bodies + b].mass <= 0.0)
     {
       shared_state.mass[k] = 0.0;
-      shared_state.momentum[k].setZero();
       shared_state.force[k].setZero();
       continue;
     }
     const NodeBodyData& d = fields.data[slot * n_bodies + b];
     shared_state.mass[k] = d.mass;
-    shared_state.momentum[k] = d.momentum;
     shared_state.force[k] = d.force + d.mass * parameters.gravity;
   }
   sum_shared_state_over_ranks();
@@ -68,24 +64,20 @@ void Solver::sum_shared_state_over_ranks()
   // After the node exchange both ranks of a cut-plane node hold its complete data; only the
   // lower one contributes.
   const std::size_t n = shared.keys.size();
-  std::vector<double> packed(7 * n, 0.0);
+  std::vector<double> packed(4 * n, 0.0);
   for (std::size_t k = 0; k < n; ++k)
   {
     if (shared_state.mass[k] <= 0.0 || !grid_settings.owns_node(shared.keys[k]))
       continue;
-    packed[7 * k] = shared_state.mass[k];
+    packed[4 * k] = shared_state.mass[k];
     for (int c = 0; c < 3; ++c)
-    {
-      packed[7 * k + 1 + c] = shared_state.momentum[k][c];
-      packed[7 * k + 4 + c] = shared_state.force[k][c];
-    }
+      packed[4 * k + 1 + c] = shared_state.force[k][c];
   }
   ranks.sum(packed.data(), static_cast<int>(packed.size()));
   for (std::size_t k = 0; k < n; ++k)
   {
-    shared_state.mass[k] = packed[7 * k];
-    shared_state.momentum[k] = Vector3(packed[7 * k + 1], packed[7 * k + 2], packed[7 * k + 3]);
-    shared_state.force[k] = Vector3(packed[7 * k + 4], packed[7 * k + 5], packed[7 * k + 6]);
+    shared_state.mass[k] = packed[4 * k];
+    shared_state.force[k] = Vector3(packed[4 * k + 1], packed[4 * k + 2], packed[4 * k + 3]);
   }
 }
 

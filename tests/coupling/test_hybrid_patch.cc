@@ -130,12 +130,20 @@ TEST_P(HybridPatch, UniformDeformationCrossesTheInterfaceUnchanged)
             << ", stress error / stress " << large.stress / large.stress_scale
             << "; ratios for twice the strain: velocity " << velocity_ratio << ", stress "
             << stress_ratio << '\n';
-  EXPECT_NEAR(velocity_ratio, 4.0, 0.4);
   if (GetParam() == CouplingScheme::same_step)
+  {
+    EXPECT_NEAR(velocity_ratio, 4.0, 0.4);
     EXPECT_NEAR(stress_ratio, 4.0, 0.4);
-  else // the window's force lag adds a first-order part to the stress (measured ratio 3.4)
-    EXPECT_TRUE(stress_ratio > 3.0 && stress_ratio < 4.4) << stress_ratio;
-  // Absolute bound at 0.1 % strain (measured 0.8 % of the velocity scale).
+  }
+  else
+  {
+    // The window's force lag adds a first-order part, and the impulse correction hands each
+    // window's momentum error (the MPM force's change over the window, first order in L) back
+    // to the interface nodes in the next one: measured ratios 3.16 (velocity), 3.06 (stress).
+    EXPECT_TRUE(velocity_ratio > 2.7 && velocity_ratio < 4.4) << velocity_ratio;
+    EXPECT_TRUE(stress_ratio > 2.7 && stress_ratio < 4.4) << stress_ratio;
+  }
+  // Absolute bound at 0.1 % strain (measured 0.8 and 0.9 % of the velocity scale).
   EXPECT_LT(large.velocity, 0.015 * large.velocity_scale);
 }
 
@@ -164,23 +172,22 @@ TEST_P(HybridPatch, MomentumIsConserved)
   while (solver.time() < 3e-3)
   {
     solver.advance();
-    worst = std::max(worst, (solver.total_momentum() - p0).norm());
+    if (solver.at_window_end())
+      worst = std::max(worst, (solver.total_momentum() - p0).norm());
   }
   const InterfaceLedger& ledger = solver.ledger();
   const auto d = solver.mpm().diagnostics();
   const double e1 = d.kinetic_energy + d.strain_energy + d.dissipated_energy +
                     solver.fe_mechanical_energy();
+  // Both schemes exchange momentum exactly (the multi-step one one window late: the impulse
+  // in transit is counted in the total).
+  EXPECT_LT(worst, 1e-12 * p_scale);
+  EXPECT_LT((ledger.mpm_impulse + ledger.fe_impulse + solver.impulse_in_transit()).norm(),
+            1e-12 * p_scale);
   if (GetParam() == CouplingScheme::same_step)
-  {
-    EXPECT_LT(worst, 1e-12 * p_scale);
-    EXPECT_LT((ledger.mpm_impulse + ledger.fe_impulse).norm(), 1e-12 * p_scale);
     EXPECT_LT(std::abs(ledger.energy_error()), 1e-10 * e0);
-  }
   else
   {
-    // Multi-step: the FE side sees the MPM force at the window start only, so momentum is
-    // exchanged with a first-order error in the window; bound measured: see the issue note.
-    EXPECT_LT(worst, 2e-2 * p_scale);
     EXPECT_GT(ledger.fe_steps * 2, 0u);
     EXPECT_LT(ledger.fe_steps * 2, ledger.mpm_steps);
   }

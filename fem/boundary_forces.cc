@@ -1,0 +1,44 @@
+// Forces across the constrained boundary of the far field (interface nodes and face supports)
+// and their time integrals with the integrator's own weights, so that the impulses booked here
+// are exactly the momentum the body's free nodes received (docs/DESIGN.md section 6).
+#include "fem/far_field_data.h"
+
+namespace vulnus::fem
+{
+using namespace dealii;
+
+BoundaryForces FarFieldSolver::Data::boundary_forces() const
+{
+  // X_i = f_ext - f_int - ((M a)_i - m_i a_i): what the rest of the body transmits to dof i.
+  auto transmitted = [this](const types::global_dof_index i) {
+    return external_force_raw(i) - internal_force_raw(i) - inertia_coupling_raw(i);
+  };
+  BoundaryForces forces;
+  forces.interface.resize(interface_nodes.size());
+  for (std::size_t n = 0; n < interface_nodes.size(); ++n)
+    for (unsigned int c = 0; c < 3; ++c)
+      forces.interface[n][c] = transmitted(interface_nodes[n].dofs[c]);
+  for (const DirichletDof& dirichlet : dirichlet_dofs)
+    if (dirichlet.source != DirichletSource::interface)
+      forces.supports[dirichlet.face][dirichlet.component] +=
+        lumped_mass(dirichlet.dof) * acceleration(dirichlet.dof) - transmitted(dirichlet.dof);
+  return forces;
+}
+
+void FarFieldSolver::Data::integrate_boundary_forces(const double dt)
+{
+  const BoundaryForces end = boundary_forces();
+  // Staggered central difference: v_{n+1/2} - v_{n-1/2} = dt M^{-1} f(u_n), the start state.
+  // Velocity Verlet, Newmark and generalized-alpha: v_{n+1} - v_n = dt ((1 - gamma) a_n +
+  // gamma a_{n+1}), exact for the first two (the equations of motion hold at both ends); the
+  // generalized-alpha's hold at its intermediate point, so there the split is approximate.
+  const double w_end = prm.staggered_velocity ? 0.0 : integrator_gamma(prm);
+  const double w_start = 1.0 - w_end;
+  interface_impulse_last_step.resize(end.interface.size());
+  for (std::size_t n = 0; n < end.interface.size(); ++n)
+    interface_impulse_last_step[n] = dt * (w_start * boundary_now.interface[n] + w_end * end.interface[n]);
+  for (unsigned int b = 0; b <= n_slab_faces; ++b)
+    support_impulse[b] += dt * (w_start * boundary_now.supports[b] + w_end * end.supports[b]);
+  boundary_now = end;
+}
+} // namespace vulnus::fem
