@@ -149,8 +149,18 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                        {"interface_mpm_work_J", ledger.mpm_work},
                        {"interface_fe_work_J", ledger.fe_work},
                        {"interface_energy_error_J", ledger.energy_error()},
+                       {"interface_momentum_created_kg_m_s",
+                        (ledger.mpm_impulse + ledger.fe_impulse + solver.impulse_in_transit()).norm()},
+                       {"interface_impulse_in_transit_kg_m_s", solver.impulse_in_transit().norm()},
                        {"mpm_seconds", mpm_side.phase_times().total() - mpm_side.phase_times().coupling},
                        {"coupling_and_fe_seconds", mpm_side.phase_times().coupling}};
+  // What the far field's supports gave the body, face by face (x-, x+, y-, y+, z-, z+).
+  static const char* const face_names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+  for (unsigned int b = 0; b < fem::n_slab_faces; ++b)
+  {
+    const dealii::Tensor<1, 3>& j = fe.support_impulses[b];
+    summary["hybrid"]["fe_support_impulse_N_s"][face_names[b]] = {j[0], j[1], j[2]};
+  }
   return summary;
 }
 

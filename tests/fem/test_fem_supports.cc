@@ -1,0 +1,82 @@
+// Support impulses: a free slab moving towards a fixed face. Every change of the body's
+// momentum comes through the supports, so the momentum change must equal the sum of the
+// faces' booked support impulses to round-off (explicit: the velocity-Verlet and the
+// staggered step; implicit: Newmark), and the free faces must book none.
+#include "fem/far_field_solver.h"
+#include "fem_test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+using namespace dealii;
+using namespace vulnus::fem;
+
+struct SupportCase
+{
+  const char* name;
+  TimeIntegrator integrator;
+  bool staggered;
+};
+
+class FeSupports : public ::testing::TestWithParam<SupportCase>
+{
+};
+
+TEST_P(FeSupports, MomentumChangeIsTheSupportsImpulse)
+{
+  const SupportCase c = GetParam();
+  FeSceneParameters p;
+  p.slab_min = {{0.0, 0.0, 0.0}};
+  p.slab_max = {{0.012, 0.004, 0.008}};
+  p.interface_cell_size = 0.002;
+  p.far_cell_size = 0.002;
+  p.grading_ratio = 1.0;
+  p.integrator = c.integrator;
+  p.staggered_velocity = c.staggered;
+  p.time_step = 2e-5;
+  p.newton_relative_tolerance = 1e-12;
+  p.linear_relative_tolerance = 1e-12;
+  for (auto& face : p.faces)
+    face.condition = FaceParameters::Condition::free;
+  p.faces[1].condition = FaceParameters::Condition::fixed; // x+
+  FarFieldSolver solver(p, MPI_COMM_WORLD);
+  solver.setup();
+  // Moving at 0.2 m/s towards x+, faster in the middle: the fixed face stops it.
+  solver.set_initial_velocity([](const Point<3>& x) {
+    Tensor<1, 3> v;
+    v[0] = 0.2 * (1.0 + std::sin(M_PI * x[2] / 0.008));
+    return v;
+  });
+  const Tensor<1, 3> p0 = solver.diagnostics().momentum;
+  while (solver.time() < 4e-4)
+    solver.advance(std::min(solver.next_time_step(), 4e-4 - solver.time()));
+  const FeDiagnostics d = solver.diagnostics();
+  Tensor<1, 3> booked;
+  for (unsigned int b = 0; b < n_slab_faces; ++b)
+    booked += d.support_impulses[b];
+  const double scale = p0.norm();
+  std::cout << c.name << ": momentum change " << (d.momentum - p0) << ", booked " << booked
+            << ", x+ impulse " << d.support_impulses[1] << '\n';
+  // The face really stopped the body: a large share of the momentum went through it.
+  EXPECT_GT(-d.support_impulses[1][0], 0.1 * scale);
+  EXPECT_LT((d.momentum - p0 - booked).norm(), 1e-9 * scale);
+  for (unsigned int b = 0; b < n_slab_faces; ++b)
+  {
+    if (b != 1)
+    {
+      EXPECT_EQ(d.support_impulses[b].norm(), 0.0) << "face " << b;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, FeSupports,
+                         ::testing::Values(SupportCase{"verlet", TimeIntegrator::central_difference, false},
+                                           SupportCase{"staggered", TimeIntegrator::central_difference, true},
+                                           SupportCase{"newmark", TimeIntegrator::newmark, false}),
+                         [](const ::testing::TestParamInfo<SupportCase>& info) {
+                           return std::string(info.param.name);
+                         });
+} // namespace
