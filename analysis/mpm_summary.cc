@@ -9,6 +9,11 @@ namespace vulnus::analysis
 {
 namespace
 {
+const char* face_condition_name(const mpm::FaceCondition c)
+{
+  return c == mpm::FaceCondition::fixed ? "fixed" : c == mpm::FaceCondition::roller ? "roller" : "free";
+}
+
 /// A wound of fewer than three points has no shape: aspect ratio and axis are null.
 nlohmann::json face_json(const FaceWound& w)
 {
@@ -30,7 +35,8 @@ double accounted_energy(const mpm::Solver& solver, const mpm::SceneDiagnostics& 
 }
 
 nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
-                           const WoundSample& sample, const mpm::SceneDiagnostics& d)
+                           const WoundSample& sample, const mpm::SceneDiagnostics& d,
+                           const std::array<mpm::Vector3, 6>& supports)
 {
   const mpm::Vector3 axis = solver.flight_direction();
   const int projectile = solver.projectile();
@@ -58,10 +64,16 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
   if (projectile >= 0)
   {
     const mpm::BodySummary& b = d.bodies[projectile];
-    const double speed = b.velocity.dot(axis);
+    // At the exit when the projectile left the target (the run may go on after it).
+    const mpm::ProjectileExit& exit = solver.projectile_exit();
+    const double speed = exit.recorded ? exit.velocity.dot(axis) : b.velocity.dot(axis);
+    const double kinetic = exit.recorded ? exit.kinetic_energy : b.kinetic_energy;
     bullet["initial_velocity_m_s"] = totals.projectile_initial_speed;
+    bullet["exited"] = exit.recorded;
+    bullet["exit_time_s"] = exit.recorded ? nlohmann::json(exit.time) : nlohmann::json();
     bullet["exit_velocity_m_s"] = speed;
-    bullet["kinetic_energy_lost_J"] = totals.projectile_initial_kinetic_energy - b.kinetic_energy;
+    bullet["velocity_now_m_s"] = b.velocity.dot(axis);
+    bullet["kinetic_energy_lost_J"] = totals.projectile_initial_kinetic_energy - kinetic;
     bullet["max_von_mises_over_yield"] = solver.peak_von_mises_over_yield()[projectile];
     bullet["position_m"] = {b.centroid[0], b.centroid[1], b.centroid[2]};
     bullet["rigid"] = solver.body_material(projectile).is_rigid();
@@ -75,6 +87,22 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
       totals.projectile_initial_speed > 0 ? fastest / totals.projectile_initial_speed : 0.0;
   }
   j["bullet"] = bullet;
+
+  // The target (every body but the projectile) and what the supports gave it.
+  double target_kinetic = 0.0;
+  mpm::Vector3 target_momentum = mpm::Vector3::Zero();
+  for (std::size_t b = 0; b < d.bodies.size(); ++b)
+    if (static_cast<int>(b) != projectile)
+    {
+      target_kinetic += d.bodies[b].kinetic_energy;
+      target_momentum += d.bodies[b].mass * d.bodies[b].velocity;
+    }
+  j["target"] = {{"kinetic_energy_J", target_kinetic},
+                 {"momentum_kg_m_s", {target_momentum[0], target_momentum[1], target_momentum[2]}}};
+  static const char* const face_names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+  for (int f = 0; f < 6; ++f)
+    j["supports"][face_names[f]] = {{"condition", face_condition_name(solver.scene().domain_faces[f])},
+                                    {"impulse_N_s", {supports[f][0], supports[f][1], supports[f][2]}}};
 
   const double initial = solver.initial_energy();
   j["energy"] = {{"initial_J", initial},

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,9 @@ inline double relative_balance_error(const double energy, const double initial)
 }
 
 /// `sample`: the target's failed points and intact totals over all ranks
-/// (collect_wound_sample, complete on rank 0), `d`: the diagnostics over all ranks.
+/// (collect_wound_sample, complete on rank 0), `d`: the diagnostics over all ranks,
+/// `supports`: Solver::support_impulses (collective, so taken by the caller on every rank).
 nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
-                           const WoundSample& sample, const mpm::SceneDiagnostics& d);
+                           const WoundSample& sample, const mpm::SceneDiagnostics& d,
+                           const std::array<mpm::Vector3, 6>& supports);
 } // namespace vulnus::analysis

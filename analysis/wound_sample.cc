@@ -1,4 +1,5 @@
-// Collects the target's failed points and intact totals over the ranks for the wound metrics.
+// Collects the target's failed points and intact totals over the ranks for the wound metrics,
+// the points that left the grid included.
 #include "analysis/wound_sample.h"
 
 #include <algorithm>
@@ -53,6 +54,24 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
       else
         append_record(failed, X, p.reference_volume[i], flag);
     }
+  }
+  // Target points that left the grid keep their place in the wound.
+  for (const mpm::DepartedPoint& d : solver.departed_points())
+  {
+    if (static_cast<int>(d.body) == projectile || solver.body_material(d.body).is_rigid())
+      continue;
+    const double half_spacing =
+      0.5 * solver.scene().cell_size / solver.scene().bodies[d.body].particles_per_cell;
+    const double along = d.reference_position.dot(axis);
+    entrance = std::min(entrance, along - half_spacing);
+    exit = std::max(exit, along + half_spacing);
+    if (d.failure == 0)
+    {
+      ++sample.n_intact;
+      sample.intact_volume += d.reference_volume;
+    }
+    else
+      append_record(failed, d.reference_position, d.reference_volume, d.failure);
   }
   const mpm::RankGroup& ranks = solver.rank_group();
   sample.entrance = ranks.min(entrance);

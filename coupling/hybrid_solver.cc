@@ -167,7 +167,6 @@ void HybridSolver::gather_fe_interface_state()
 void HybridSolver::predict_interface(const double dt, const mpm::SharedNodeState& mpm_side)
 {
   gather_fe_interface_state();
-  const bool staggered = split.fe.staggered_velocity;
   const mpm::Grid& grid = mpm_solver->background_grid();
   for (std::size_t k = 0; k < keys.size(); ++k)
   {

@@ -28,6 +28,31 @@ void apply_face_conditions(const Grid& grid, const FaceConditions& faces, const 
   }
 }
 
+void apply_face_conditions(const Grid& grid, const FaceConditions& faces, const std::int64_t key,
+                           const double mass, Vector3& velocity, std::array<Vector3, 6>& impulse)
+{
+  const auto ijk = grid.node_ijk(key);
+  const auto& n = grid.cells();
+  for (int d = 0; d < 3; ++d)
+  {
+    const bool on_lower = ijk[d] <= 0, on_upper = ijk[d] >= n[d];
+    if (!on_lower && !on_upper)
+      continue;
+    const int face = on_lower ? 2 * d : 2 * d + 1;
+    if (faces[face] == FaceCondition::fixed)
+    {
+      impulse[face] -= mass * velocity;
+      velocity.setZero();
+      return;
+    }
+    if (faces[face] == FaceCondition::roller)
+    {
+      impulse[face][d] -= mass * velocity[d];
+      velocity[d] = 0.0;
+    }
+  }
+}
+
 namespace
 {
 /// Separation along `normal` (the first body's outward normal) of two bodies' mass centres
@@ -163,12 +188,19 @@ bool rigid_bodies_touch(const GridUpdateSettings& s, const NodeBodyData* data,
 }
 } // namespace
 
-void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fields)
+void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fields,
+                 GridUpdateResult& result)
 {
   const std::size_t n_bodies = fields.n_bodies;
   const long n_nodes = static_cast<long>(grid.n_active());
   const double dt = s.time_step;
-#pragma omp parallel for schedule(static)
+  result.support_impulse.fill(Vector3::Zero());
+#pragma omp parallel
+  {
+  std::array<Vector3, 6> impulse_local, impulse_elsewhere; // another rank's node
+  impulse_local.fill(Vector3::Zero());
+  impulse_elsewhere.fill(Vector3::Zero());
+#pragma omp for schedule(static)
   for (long node = 0; node < n_nodes; ++node)
   {
     const std::int64_t key = grid.active_keys()[node];
@@ -196,9 +228,15 @@ void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fiel
     }
     if (s.contact && n_with_mass > 1)
       continue; // resolve_contacts applies the face conditions after the correction
+    const bool owned = !s.owns_node || s.owns_node(key);
     for (std::size_t b = 0; b < n_bodies; ++b)
-      if (data[b].mass > s.mass_tolerance && !s.body_is_rigid[b])
-        apply_face_conditions(grid, s.faces, key, v_new[b]); // v^n stays: FLIP sees the stop
+      if (data[b].mass > s.mass_tolerance && !s.body_is_rigid[b]) // v^n stays: FLIP sees the stop
+        apply_face_conditions(grid, s.faces, key, data[b].mass, v_new[b],
+                              owned ? impulse_local : impulse_elsewhere);
+  }
+#pragma omp critical
+  for (int f = 0; f < 6; ++f)
+    result.support_impulse[f] += impulse_local[f];
   }
 }
 
@@ -220,6 +258,9 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
   {
     std::vector<Vector3> force_local(n_bodies, Vector3::Zero());
     std::vector<Vector3> force_elsewhere(n_bodies, Vector3::Zero()); // another rank's node
+    std::array<Vector3, 6> impulse_local, impulse_elsewhere;
+    impulse_local.fill(Vector3::Zero());
+    impulse_elsewhere.fill(Vector3::Zero());
 #pragma omp for schedule(static)
     for (long node = 0; node < n_nodes; ++node)
     {
@@ -257,11 +298,16 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
       }
       for (std::size_t b = 0; b < n_bodies; ++b)
         if (data[b].mass > s.mass_tolerance && !s.body_is_rigid[b])
-          apply_face_conditions(grid, s.faces, keys[node], v_new[b]);
+          apply_face_conditions(grid, s.faces, keys[node], data[b].mass, v_new[b],
+                                owned ? impulse_local : impulse_elsewhere);
     }
 #pragma omp critical
-    for (std::size_t b = 0; b < n_bodies; ++b)
-      result.contact_force[b] += force_local[b];
+    {
+      for (std::size_t b = 0; b < n_bodies; ++b)
+        result.contact_force[b] += force_local[b];
+      for (int f = 0; f < 6; ++f)
+        result.support_impulse[f] += impulse_local[f];
+    }
   }
   result.contact_dissipation = dissipation;
   result.n_contact_nodes = n_contact_nodes;

@@ -8,6 +8,7 @@
 #include "mpm/scene_parameters.h"
 
 #include <functional>
+#include <array>
 #include <vector>
 
 namespace vulnus::mpm
@@ -43,11 +44,17 @@ struct GridUpdateResult
   /// key and the pair of bodies, or -1.
   std::int64_t rigid_meeting_node = -1;
   std::size_t rigid_meeting_bodies[2] = {0, 0};
+  /// Impulse the domain faces' supports gave the deformable bodies this step, by face (x-, x+,
+  /// y-, y+, z-, z+), N s: m (v_after - v_before) of the face conditions at this rank's nodes.
+  std::array<Vector3, 6> support_impulse = {Vector3::Zero(), Vector3::Zero(), Vector3::Zero(),
+                                            Vector3::Zero(), Vector3::Zero(), Vector3::Zero()};
 };
 
 /// Computes fields.velocity (v^n) and fields.velocity_new (v^(n+1)) of every node and body,
-/// with the face conditions, except at nodes where bodies meet when contact is on.
-void update_grid(const Grid& grid, const GridUpdateSettings& settings, GridFields& fields);
+/// with the face conditions, except at nodes where bodies meet when contact is on; books the
+/// supports' impulse there into result.support_impulse (zeroed first).
+void update_grid(const Grid& grid, const GridUpdateSettings& settings, GridFields& fields,
+                 GridUpdateResult& result);
 
 /// Corrects v^(n+1) at the nodes where two or more bodies have mass (contact on), then applies
 /// the face conditions there; fills the contact force, dissipation and node count.
@@ -57,6 +64,9 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& settings, Grid
 /// Applies the domain face conditions to a nodal velocity of node `key`.
 void apply_face_conditions(const Grid& grid, const FaceConditions& faces, std::int64_t key,
                            Vector3& velocity);
+/// The same, adding the impulse mass * (change of velocity) to the face that imposed it.
+void apply_face_conditions(const Grid& grid, const FaceConditions& faces, std::int64_t key,
+                           double mass, Vector3& velocity, std::array<Vector3, 6>& impulse);
 
 /// Re-derives nodal velocities from fields.projected_momentum and the nodal masses (MUSL) into
 /// fields.velocity (v^n is not needed any more then; fields.velocity_new still moves the

@@ -236,13 +236,15 @@ void Solver::advance(const double cap)
   lap(timings.particle_to_grid);
 
   grid_settings.time_step = dt;
-  update_grid(grid, grid_settings, fields);
+  update_grid(grid, grid_settings, fields, grid_result);
   lap(timings.grid_update);
   resolve_contacts(grid, grid_settings, fields, grid_result);
   if (const std::string problem = ranks.first_message(rigid_meeting_problem(dt)); !problem.empty())
     throw BlowUp(problem);
   reduce_contact_result();
   accumulated_contact_dissipation += grid_result.contact_dissipation;
+  for (int f = 0; f < 6; ++f)
+    support_impulse_here[f] += grid_result.support_impulse[f];
   lap(timings.contact);
   if (shared.partner)
   {
@@ -296,6 +298,7 @@ void Solver::advance(const double cap)
     throw BlowUp(material_problem);
   if (const std::string problem = ranks.first_message(rigid_face_problem()); !problem.empty())
     throw BlowUp(problem);
+  record_projectile_exit();
   if (parameters.remove_points_leaving_grid)
     remove_points_outside_grid();
   check_state();
@@ -424,6 +427,9 @@ void Solver::remove_points_outside_grid()
       if (!leaves(particles.position[p]))
         continue;
       keep[p] = 0;
+      departed.push_back({particles.reference_position[p].cast<double>(),
+                          particles.reference_volume[p], particles.failure[p],
+                          static_cast<std::uint32_t>(particles.body_of(p))});
       const double m = particles.mass[p];
       outflow[1] += 0.5 * m * particles.velocity[p].squaredNorm() +
                     particles.reference_volume[p] *

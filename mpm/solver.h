@@ -20,6 +20,7 @@
 #include "mpm/stress_update.h"
 #include "mpm/transfer_settings.h"
 
+#include <array>
 #include <functional>
 #include <iosfwd>
 #include <limits>
@@ -54,6 +55,24 @@ struct PhaseTimes
     return time_step + particle_to_grid + grid_update + contact + grid_to_particle + stress_update +
            checks_and_sorting + coupling;
   }
+};
+
+/// A point that left the grid: what the wound analysis keeps of it.
+struct DepartedPoint
+{
+  Vector3 reference_position;
+  double reference_volume = 0.0; ///< m^3
+  std::uint8_t failure = 0;      ///< materials::FailureFlag bits
+  std::uint32_t body = 0;
+};
+
+/// The projectile when its tail passed the exit plane (mean velocity, kinetic energy).
+struct ProjectileExit
+{
+  bool recorded = false;
+  double time = 0.0;                   ///< s
+  Vector3 velocity = Vector3::Zero();  ///< m/s, mass-weighted mean
+  double kinetic_energy = 0.0;         ///< J
 };
 
 /// Distributed runs (a communicator of several ranks): each rank holds the points of one slab
@@ -134,6 +153,14 @@ public:
   std::size_t removed_points() const { return n_removed; }
   double removed_energy() const { return outflow_energy; }
   const Vector3& removed_momentum() const { return outflow_momentum; }
+  /// Points of this rank that left the grid (removed), as the wound analysis needs them.
+  const std::vector<DepartedPoint>& departed_points() const { return departed; }
+  /// The projectile's state when its tail passed the exit plane (recorded once, also when the
+  /// run goes on after it).
+  const ProjectileExit& projectile_exit() const { return exit_record; }
+  /// Impulse the domain faces' supports gave the deformable bodies since the start, by face
+  /// (x-, x+, y-, y+, z-, z+), N s. Collective.
+  std::array<Vector3, 6> support_impulses() const;
   /// Total energy at the start (J).
   double initial_energy() const { return energy_at_start; }
   /// Number of nodes where bodies met in the last step.
@@ -172,6 +199,8 @@ private:
   bool stops_at_projectile_exit() const;
   /// Collective: the smallest x . flight axis of the projectile's points.
   double projectile_tail() const;
+  /// Collective: records the projectile's exit the first time its tail passes the exit plane.
+  void record_projectile_exit();
   void plan_slabs();
   void rebalance_slabs();
   void migrate_points(bool to_any_rank);
@@ -219,5 +248,10 @@ private:
   std::size_t n_active_last_step = 0;
   double outflow_energy = 0.0;
   Vector3 outflow_momentum = Vector3::Zero();
+  std::vector<DepartedPoint> departed;
+  ProjectileExit exit_record;
+  /// Support impulses of this rank's nodes since the start.
+  std::array<Vector3, 6> support_impulse_here = {Vector3::Zero(), Vector3::Zero(), Vector3::Zero(),
+                                                 Vector3::Zero(), Vector3::Zero(), Vector3::Zero()};
 };
 } // namespace vulnus::mpm

@@ -39,6 +39,18 @@ void Solver::save(std::ostream& out) const
   put(out, static_cast<std::uint64_t>(n_removed));
   put(out, outflow_energy);
   put(out, outflow_momentum);
+  std::vector<double> departed_packed; // x, y, z, volume, failure, body
+  for (const DepartedPoint& d : departed)
+    departed_packed.insert(departed_packed.end(),
+                           {d.reference_position[0], d.reference_position[1], d.reference_position[2],
+                            d.reference_volume, double(d.failure), double(d.body)});
+  put_vector(out, departed_packed);
+  put(out, static_cast<std::uint64_t>(exit_record.recorded));
+  put(out, exit_record.time);
+  put(out, exit_record.velocity);
+  put(out, exit_record.kinetic_energy);
+  for (const Vector3& impulse : support_impulse_here)
+    put(out, impulse);
   put(out, static_cast<std::uint64_t>(ranks.size()));
   put(out, static_cast<std::int32_t>(partition.axis()));
   put_vector(out, partition.first_layers());
@@ -81,6 +93,18 @@ void Solver::restore(std::istream& in)
   get(in, removed);
   get(in, outflow);
   get(in, outflow_p);
+  std::vector<double> departed_packed;
+  get_vector(in, departed_packed);
+  std::uint64_t exit_recorded = 0;
+  ProjectileExit exit_loaded;
+  get(in, exit_recorded);
+  get(in, exit_loaded.time);
+  get(in, exit_loaded.velocity);
+  get(in, exit_loaded.kinetic_energy);
+  exit_loaded.recorded = exit_recorded != 0;
+  std::array<Vector3, 6> supports_loaded;
+  for (Vector3& impulse : supports_loaded)
+    get(in, impulse);
   std::uint64_t n_ranks = 0;
   std::int32_t slab_axis = 0;
   std::vector<int> first_layers;
@@ -89,7 +113,8 @@ void Solver::restore(std::istream& in)
   get_vector(in, first_layers);
   expect_tag(in, magic, "checkpoint is incomplete (no trailer)");
   const std::size_t n = loaded.position.size();
-  bool sizes_agree = loaded.body_begin.size() == n_bodies + 1 && loaded.body_begin.back() == n &&
+  bool sizes_agree = departed_packed.size() % 6 == 0 &&
+                     loaded.body_begin.size() == n_bodies + 1 && loaded.body_begin.back() == n &&
                      loaded.body_begin.front() == 0 &&
                      std::is_sorted(loaded.body_begin.begin(), loaded.body_begin.end()) &&
                      rigid_velocity.size() == n_bodies && peak.size() == n_bodies &&
@@ -132,5 +157,12 @@ void Solver::restore(std::istream& in)
   n_removed = removed;
   outflow_energy = outflow;
   outflow_momentum = outflow_p;
+  departed.clear();
+  for (std::size_t k = 0; k + 5 < departed_packed.size(); k += 6)
+    departed.push_back({Vector3(departed_packed[k], departed_packed[k + 1], departed_packed[k + 2]),
+                        departed_packed[k + 3], static_cast<std::uint8_t>(departed_packed[k + 4]),
+                        static_cast<std::uint32_t>(departed_packed[k + 5])});
+  exit_record = exit_loaded;
+  support_impulse_here = supports_loaded;
 }
 } // namespace vulnus::mpm

@@ -121,11 +121,12 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
   const analysis::WoundSample wound = analysis::collect_wound_sample(mpm_side); // collective
   const mpm::SceneDiagnostics m = mpm_side.diagnostics();
   const fem::FeDiagnostics fe = solver.fe().diagnostics();
+  const std::array<mpm::Vector3, 6> supports = mpm_side.support_impulses(); // collective
   const mpm::RankGroup& ranks = mpm_side.rank_group();
   totals.mpi_bytes_sent = ranks.sum(ranks.bytes_sent());
   if (ranks.rank() != 0)
     return {};
-  nlohmann::json summary = analysis::mpm_summary(mpm_side, totals, wound, m);
+  nlohmann::json summary = analysis::mpm_summary(mpm_side, totals, wound, m, supports);
   const double energy = hybrid_scene_energy(solver, m, fe);
   const coupling::InterfaceLedger& ledger = solver.ledger();
   const coupling::HybridScene& split = solver.scene();

@@ -15,7 +15,9 @@ std::vector<std::string> mpm_history_columns()
           "bullet_position_x", "bullet_position_y", "bullet_position_z", "bullet_velocity_x",
           "bullet_velocity_y", "bullet_velocity_z", "bullet_contact_force_x",
           "bullet_contact_force_y", "bullet_contact_force_z", "contact_nodes", "active_nodes",
-          "points"};
+          "points", "target_kinetic_J", "target_momentum_x", "target_momentum_y",
+          "target_momentum_z", "support_impulse_x-", "support_impulse_x+", "support_impulse_y-",
+          "support_impulse_y+", "support_impulse_z-", "support_impulse_z+"};
 }
 
 std::vector<double> mpm_history_row(const mpm::Solver& solver, const mpm::SceneDiagnostics& d)
@@ -32,6 +34,16 @@ std::vector<double> mpm_history_row(const mpm::Solver& solver, const mpm::SceneD
     force = solver.contact_forces().empty() ? mpm::Vector3::Zero()
                                             : solver.contact_forces()[solver.projectile()];
   }
+  double target_kinetic = 0.0;
+  mpm::Vector3 target_momentum = mpm::Vector3::Zero();
+  for (std::size_t b = 0; b < d.bodies.size(); ++b)
+    if (static_cast<int>(b) != solver.projectile())
+    {
+      target_kinetic += d.bodies[b].kinetic_energy;
+      target_momentum += d.bodies[b].mass * d.bodies[b].velocity;
+    }
+  // Each face's impulse along its own normal axis (N s).
+  const std::array<mpm::Vector3, 6> supports = solver.support_impulses(); // collective
   return {solver.time(),
           solver.last_time_step(),
           double(solver.step_count()),
@@ -60,6 +72,16 @@ std::vector<double> mpm_history_row(const mpm::Solver& solver, const mpm::SceneD
           force[2],
           double(solver.contact_nodes()),
           double(solver.active_nodes_all_ranks()),
-          double(solver.n_points_all_ranks())};
+          double(solver.n_points_all_ranks()),
+          target_kinetic,
+          target_momentum[0],
+          target_momentum[1],
+          target_momentum[2],
+          supports[0][0],
+          supports[1][0],
+          supports[2][1],
+          supports[3][1],
+          supports[4][2],
+          supports[5][2]};
 }
 } // namespace vulnus::simulator

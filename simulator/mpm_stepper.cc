@@ -141,11 +141,12 @@ nlohmann::json MpmStepper::summary(const analysis::RunTotals& run) const
   totals.projectile_initial_kinetic_energy = projectile.kinetic_energy;
   const analysis::WoundSample wound = analysis::collect_wound_sample(solver); // collective
   const mpm::SceneDiagnostics final_state = solver.diagnostics();
+  const std::array<mpm::Vector3, 6> supports = solver.support_impulses(); // collective
   const mpm::RankGroup& ranks = solver.rank_group();
   totals.mpi_bytes_sent = ranks.sum(ranks.bytes_sent());
   if (ranks.rank() != 0)
     return {};
-  nlohmann::json j = analysis::mpm_summary(solver, totals, wound, final_state);
+  nlohmann::json j = analysis::mpm_summary(solver, totals, wound, final_state, supports);
   j["method"] = "MPM";
   return j;
 }
