@@ -26,5 +26,7 @@ struct HybridParameters
   /// multi_step: MPM substeps per FE step; 0 chooses the FE step from its own stability
   /// (explicit) or the deck step (implicit).
   unsigned int substeps = 0;
+  /// A failed far-field quadrature point stops the run (else it warns and goes on).
+  bool stop_when_fe_points_fail = true;
 };
 } // namespace vulnus::coupling

@@ -26,6 +26,10 @@ void declare_hybrid_section(EntryTable& table)
   table.declare("Substeps", "0", Patterns::Integer(0, 100000),
                 "Multi step: at most this many MPM substeps per FE step (0: no limit; the FE "
                 "step is then its own stable or deck step).");
+  table.declare("Stop when FE points fail", "true", Patterns::Bool(),
+                "true: the run stops when a far-field quadrature point fails (the wound has "
+                "reached the FE region, whose answer is then not the MPM zone's); false: it "
+                "goes on and warns.");
   table.leave();
 }
 
@@ -41,6 +45,7 @@ void parse_hybrid_section(dealii::ParameterHandler& prm, coupling::HybridParamet
   hybrid.scheme = prm.get("Scheme") == "same step" ? coupling::CouplingScheme::same_step
                                                     : coupling::CouplingScheme::multi_step;
   hybrid.substeps = static_cast<unsigned int>(prm.get_integer("Substeps"));
+  hybrid.stop_when_fe_points_fail = prm.get_bool("Stop when FE points fail");
   prm.leave_subsection();
 }
 } // namespace vulnus::deck

@@ -86,6 +86,11 @@ std::string HybridStepper::energy_error_causes() const
          "rigid body";
 }
 
+std::vector<std::string> HybridStepper::check_validity(const bool final_check)
+{
+  return monitors.check(solver, initial_energy, final_check);
+}
+
 std::string HybridStepper::blow_up_remedy() const
 {
   return "a smaller Time/CFL or Far field time step; an inverted or failed FE element means the "
@@ -105,8 +110,8 @@ std::vector<std::string> HybridStepper::final_warnings() const
   const unsigned long long failed = solver.fe().diagnostics().n_failed_points; // collective
   if (failed > 0)
     warnings.push_back("*** " + std::to_string(failed) +
-                       " FE quadrature points failed: the wound reached the far field; enlarge "
-                       "Hybrid/Zone min and Zone max");
+                       " FE quadrature points failed: the wound reached the far field, whose "
+                       "answer is not the MPM zone's; enlarge Hybrid/Zone min and Zone max");
   const std::vector<std::string> mpm_warnings = mpm_final_warnings(solver.mpm());
   warnings.insert(warnings.end(), mpm_warnings.begin(), mpm_warnings.end());
   return warnings;
@@ -155,6 +160,7 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                        {"interface_impulse_in_transit_kg_m_s", solver.impulse_in_transit().norm()},
                        {"mpm_seconds", mpm_side.phase_times().total() - mpm_side.phase_times().coupling},
                        {"coupling_and_fe_seconds", mpm_side.phase_times().coupling}};
+  summary["hybrid"]["monitors"] = monitors.summary();
   // What the far field's supports gave the body, face by face (x-, x+, y-, y+, z-, z+).
   static const char* const face_names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
   for (unsigned int b = 0; b < fem::n_slab_faces; ++b)
@@ -179,7 +185,7 @@ std::string HybridStepper::final_report(const nlohmann::json& summary) const
     << ledger.energy_error() << " J; failed points: matrix " << summary["failed"]["matrix"]
     << ", fiber " << summary["failed"]["fiber"] << ", total " << summary["failed"]["total"];
   if (mpm_side.projectile() >= 0)
-    o << "; bullet exit velocity " << summary["bullet"]["exit_velocity_m_s"].get<double>() << " m/s";
+    o << bullet_report(summary);
   return o.str();
 }
 } // namespace vulnus::simulator

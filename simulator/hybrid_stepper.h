@@ -4,6 +4,7 @@
 
 #include "coupling/hybrid_solver.h"
 #include "deck/run_parameters.h"
+#include "simulator/hybrid_monitors.h"
 #include "simulator/mpm_stepper.h"
 #include "simulator/stepper.h"
 
@@ -28,6 +29,7 @@ public:
   std::string blow_up_remedy() const override;
   double energy_balance_error() const override;
   std::string energy_error_causes() const override;
+  std::vector<std::string> check_validity(bool final_check) override;
 
   std::vector<std::string> history_columns() const override;
   std::vector<double> history_row() const override;
@@ -42,5 +44,6 @@ private:
   coupling::HybridSolver solver;
   ProjectileStart projectile;
   double initial_energy; ///< J, of the whole scene at t = 0
+  HybridMonitors monitors;
 };
 } // namespace vulnus::simulator

@@ -166,7 +166,19 @@ std::string MpmStepper::final_report(const nlohmann::json& summary) const
     << "; failed points: matrix " << summary["failed"]["matrix"] << ", fiber "
     << summary["failed"]["fiber"] << ", total " << summary["failed"]["total"];
   if (solver.projectile() >= 0)
-    o << "; bullet exit velocity " << summary["bullet"]["exit_velocity_m_s"].get<double>() << " m/s";
+    o << bullet_report(summary);
+  return o.str();
+}
+
+std::string bullet_report(const nlohmann::json& summary)
+{
+  const nlohmann::json& bullet = summary["bullet"];
+  std::ostringstream o;
+  if (bullet.value("exited", false))
+    o << "; bullet exit velocity " << bullet["exit_velocity_m_s"].get<double>() << " m/s";
+  else
+    o << "; the bullet has not left the target (velocity now "
+      << bullet["velocity_now_m_s"].get<double>() << " m/s)";
   return o.str();
 }
 } // namespace vulnus::simulator

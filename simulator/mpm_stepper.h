@@ -21,6 +21,10 @@ ProjectileStart projectile_start(const mpm::Solver& solver);
 /// The MPM-side warnings of a finished run: a projectile far below yield, points removed.
 std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver);
 
+/// The closing line's bullet part, from summary.json's "bullet": its exit velocity, or that it
+/// has not left the target.
+std::string bullet_report(const nlohmann::json& summary);
+
 class MpmStepper : public Stepper
 {
 public:

@@ -102,6 +102,11 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
       directory.warn(*warning);
       totals.warnings.push_back(*warning);
     }
+    for (const std::string& warning : stepper.check_validity(final_check))
+    {
+      directory.warn(warning);
+      totals.warnings.push_back(warning);
+    }
   };
   auto report_failure = [&](const std::exception& e) {
     const FailureReport report = describe_failure(e);

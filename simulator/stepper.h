@@ -58,6 +58,10 @@ public:
   virtual double energy_balance_error() const = 0;
   /// What most likely breaks the energy balance of this kind of run.
   virtual std::string energy_error_causes() const = 0;
+  /// Collective, after every step and at the end (`final_check`): the scene's own validity
+  /// monitors. Returns the warnings to record now; throws mpm::BlowUp for one that stops the
+  /// run.
+  virtual std::vector<std::string> check_validity(bool /*final_check*/) { return {}; }
 
   virtual std::vector<std::string> history_columns() const = 0;
   /// Collective: one row matching history_columns().

@@ -8,6 +8,18 @@ from . import style
 from .run_data import summary_value as _get
 
 
+def _vector_y(v):
+    return None if v is None else v[1]
+
+
+def _supports_y(summary):
+    """Impulse all domain faces' supports gave the target along y (the paper's flight axis)."""
+    supports = _get(summary, "supports")
+    if not supports:
+        return None
+    return sum(face["impulse_N_s"][1] for face in supports.values())
+
+
 # (CSV header, how to read it from summary.json)
 FIGURES = [
     ("completed", lambda s: _get(s, "completed")),
@@ -21,6 +33,10 @@ FIGURES = [
     ("bullet_exit_velocity_m_s", lambda s: _get(s, "bullet", "exit_velocity_m_s")),
     ("kinetic_energy_lost_J", lambda s: _get(s, "bullet", "kinetic_energy_lost_J")),
     ("energy_balance_error", lambda s: _get(s, "energy", "balance_error")),
+    ("end_time_s", lambda s: _get(s, "time_s")),
+    ("target_kinetic_energy_J", lambda s: _get(s, "target", "kinetic_energy_J")),
+    ("target_momentum_y_kg_m_s", lambda s: _vector_y(_get(s, "target", "momentum_kg_m_s"))),
+    ("supports_impulse_y_N_s", lambda s: _supports_y(s)),
     ("wall_seconds", lambda s: _get(s, "wall_seconds")),
     ("steps", lambda s: _get(s, "steps")),
     ("particles", lambda s: _get(s, "particles")),
@@ -95,10 +111,14 @@ def plot_comparison(path, runs, title):
         ("Wound aspect ratio", ["entrance_aspect_ratio", "exit_aspect_ratio"],
          ["entrance", "exit"], 1.0, "major / minor"),
         ("Bullet exit velocity", ["bullet_exit_velocity_m_s"], [""], 1.0, "m/s"),
+        ("Target momentum and supports' impulse, y",
+         ["target_momentum_y_kg_m_s", "supports_impulse_y_N_s"], ["target", "supports"], 1e3,
+         "g m/s"),
+        ("Target kinetic energy", ["target_kinetic_energy_J"], [""], 1.0, "J"),
         ("Energy balance error", ["energy_balance_error"], [""], 1.0, "fraction"),
         ("Wall time", ["wall_seconds"], [""], 1.0, "s"),
     ]
-    fig, axes = style.figure(2, 3, width=max(4.5, 0.6 * len(runs) + 2.0), height=3.6)
+    fig, axes = style.figure(2, 4, width=max(4.5, 0.6 * len(runs) + 2.0), height=3.6)
     for axis, (name, headers, labels, scale, unit) in zip(axes.flat, panels):
         _bars(axis, runs, headers, labels, scale, unit)
         axis.set_title(name)

@@ -61,6 +61,47 @@ TEST(HybridPaperScene, MatchesThePureMpmReferenceWithinFivePercent)
             1e-3 * hybrid["energy"]["initial_J"].get<double>());
 }
 
+// A zone too small for a stiff tissue (K = 1e8 Pa): the wound reaches the far field. By
+// default the first failed FE point stops the run, named as such; with the switch off it
+// goes on, and the monitors of summary.json say which bounds were passed.
+TEST(HybridPaperScene, AWoundReachingTheFarFieldStopsTheRunOrIsFlagged)
+{
+  ScratchDirectory scratch("hybrid_small_zone");
+  const std::string small_stiff =
+    " --set 'Material bullet/Model=rigid' --set 'Hybrid/Zone min=-0.009, 0, -0.009'"
+    " --set 'Hybrid/Zone max=0.009, 0.01, 0.009'"
+    " --set 'Material tissue/Transversely isotropic hyperelastic/Bulk modulus=1e8'";
+  const std::string deck = "run '" + source_dir() + "/inputs/paper/anisotropic_150ms_coarse_hybrid.prm'";
+  const CommandResult stopped = run_vulnus(deck + " --output stopped" + small_stiff, scratch.path);
+  EXPECT_EQ(stopped.exit_status, 1) << stopped.out << stopped.err;
+  const nlohmann::json s =
+    nlohmann::json::parse(read_text(scratch.path / "stopped" / "summary.json"));
+  EXPECT_FALSE(s["completed"].get<bool>());
+  EXPECT_NE(s["error"].get<std::string>().find("failed_fe_points"), std::string::npos) << s["error"];
+  EXPECT_NE(s["error"].get<std::string>().find("Hybrid/Stop when FE points fail"), std::string::npos);
+  EXPECT_GT(s["fe_failed_points"].get<int>(), 0);
+  EXPECT_FALSE(s["bullet"]["exited"].get<bool>());
+
+  const CommandResult going_on =
+    run_vulnus(deck + " --output going_on" + small_stiff +
+                 " --set 'Hybrid/Stop when FE points fail=false' --set 'Time/End time=1.2e-4'",
+               scratch.path);
+  EXPECT_EQ(going_on.exit_status, 0) << going_on.out << going_on.err;
+  const nlohmann::json g =
+    nlohmann::json::parse(read_text(scratch.path / "going_on" / "summary.json"));
+  const nlohmann::json& monitors = g["hybrid"]["monitors"];
+  EXPECT_TRUE(monitors["failed_fe_points"]["exceeded"].get<bool>());
+  EXPECT_GT(monitors["failed_fe_points"]["peak"].get<double>(), 0.0);
+  // The interface nodes moved more than a quarter cell (measured 0.29) and material crossed
+  // into the far field (1.2 %): both warned.
+  EXPECT_TRUE(monitors["interface_displacement_over_cell"]["exceeded"].get<bool>());
+  EXPECT_TRUE(monitors["mpm_mass_outside_zone_fraction"]["exceeded"].get<bool>());
+  bool warned = false;
+  for (const auto& w : g["warnings"])
+    warned = warned || w.get<std::string>().find("failed_fe_points") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 TEST(HybridPaperScene, AZoneOffTheGridIsRefusedBeforeAnyWork)
 {
   ScratchDirectory scratch("hybrid_bad_zone");
