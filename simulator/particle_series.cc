@@ -1,6 +1,8 @@
 // Particle outputs on the schedule; their records travel with the checkpoints.
 #include "simulator/particle_series.h"
 
+#include "io/disk_space.h"
+#include "mpm/solver.h"
 #include "simulator/mpm_snapshot.h"
 
 #include <sstream>
@@ -9,12 +11,19 @@ namespace vulnus::simulator
 {
 ParticleSeries::ParticleSeries(const std::string& directory, const double interval,
                                const double end_time, const MPI_Comm communicator)
-    : output(directory, "particles", communicator), schedule(interval, end_time)
+    : directory(directory), output(directory, "particles", communicator),
+      schedule(interval, end_time)
 {
 }
 
 void ParticleSeries::write(const Stepper& stepper)
 {
+  // About 160 bytes a point: position, velocity, stress, fiber, flags and ids.
+  constexpr double bytes_per_point = 160.0;
+  const double n_points = double(stepper.mpm_side()->n_points_all_ranks()); // collective
+  std::ostringstream what;
+  what << "the particle output at t = " << stepper.time() << " s";
+  io::require_free_space(directory, bytes_per_point * n_points, what.str());
   output.write(stepper.time(), mpm_snapshot(*stepper.mpm_side()));
 }
 

@@ -28,6 +28,7 @@ public:
 private:
   void write(const Stepper& stepper);
 
+  std::string directory;
   io::ParticleOutput output;
   OutputSchedule schedule;
 };

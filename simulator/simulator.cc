@@ -14,6 +14,7 @@
 #include "simulator/stop_signals.h"
 
 #include <chrono>
+#include <filesystem>
 #include <iomanip>
 #include <memory>
 #include <sstream>
@@ -120,6 +121,22 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
     directory.warn("the last good state is " + last_good_state());
   };
 
+  auto report_output_failure = [&](const std::exception& e) {
+    std::ostringstream o;
+    o << "output failed at step " << stepper.step_count() << " (t = " << stepper.time()
+      << " s): " << e.what();
+    std::error_code code;
+    const std::filesystem::space_info space = std::filesystem::space(directory.path(), code);
+    if (!code)
+      o << "; " << std::fixed << std::setprecision(1) << double(space.available) / 1e9
+        << " GB free where the run writes (a full disk is the usual cause; a larger "
+           "Output/Particle output interval writes less)";
+    totals.completed = false;
+    totals.error = o.str();
+    directory.warn(o.str());
+    directory.warn("the last good state is " + last_good_state());
+  };
+
   double last_progress = 0.0;
   int stop_signal = 0;
   while (!stepper.finished())
@@ -136,8 +153,16 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
       report_failure(e);
       break;
     }
-    for (const auto& p : postprocessors)
-      p->after_step(stepper);
+    try
+    {
+      for (const auto& p : postprocessors)
+        p->after_step(stepper);
+    }
+    catch (const std::exception& e)
+    {
+      report_output_failure(e);
+      break;
+    }
     try
     {
       guard_energy(false);

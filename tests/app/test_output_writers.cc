@@ -2,6 +2,7 @@
 // atomic files (no .tmp left behind, no partial file on failure), summary.json.
 #include "io/atomic_file.h"
 #include "io/csv_history.h"
+#include "io/disk_space.h"
 #include "io/particle_output.h"
 #include "io/summary_json.h"
 
@@ -228,6 +229,28 @@ TEST(AtomicFile, FailedWriterLeavesNeitherFileNorTemporary)
   EXPECT_THROW(
       write_file_atomically((scratch.path / "no/such/dir/b.txt").string(), [](std::ostream&) {}),
       std::runtime_error);
+}
+
+// The free-space check against the real file system: a need beyond any disk is refused with
+// the place and both sizes named; a small one passes.
+TEST(DiskSpace, AnOutputLargerThanTheFreeSpaceIsRefusedBeforeWriting)
+{
+  ScratchDirectory scratch("disk_space");
+  EXPECT_NO_THROW(require_free_space(scratch.path.string(), 1.0, "a tiny file"));
+  try
+  {
+    require_free_space(scratch.path.string(), 1e21, "the particle output at t = 0.001 s");
+    FAIL() << "a zettabyte fitted";
+  }
+  catch (const std::runtime_error& e)
+  {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("not enough disk space for the particle output at t = 0.001 s"),
+              std::string::npos) << message;
+    EXPECT_NE(message.find(scratch.path.string()), std::string::npos) << message;
+    EXPECT_NE(message.find("1000000000000.00 GB needed"), std::string::npos) << message;
+    EXPECT_NE(message.find("Output/Particle output interval"), std::string::npos) << message;
+  }
 }
 
 TEST(CsvHistory, HeaderAndWholeRows)
