@@ -54,12 +54,6 @@ int run_command(const CommandLine& line)
     return 2;
   }
   parameters.output.restart = !line.restart_directory.empty();
-  if (parameters.output.restart && (parameters.method != Method::mpm || parameters.hybrid.enabled))
-  {
-    std::cerr << "vulnus: error: --restart: only pure-MPM runs can be restarted (this deck is "
-              << (parameters.method == Method::fe ? "pure FE" : "hybrid") << ")\n";
-    return 2;
-  }
 
   try
   {

@@ -75,6 +75,12 @@ public:
   /// Kinetic + strain energy of the FE side, J.
   double fe_mechanical_energy() const;
 
+  /// Both sides' states and the coupling's own (window, interface velocities, corrections,
+  /// ledger) in binary; restore() on a solver built from the same deck on the same rank count
+  /// continues an explicit-far-field run bit for bit.
+  void save(std::ostream& out) const;
+  void restore(std::istream& in);
+
   void exchange(double time, double dt, const mpm::SharedNodeState& mpm_side,
                 std::vector<mpm::Vector3>& velocity_start,
                 std::vector<mpm::Vector3>& velocity_end) override;

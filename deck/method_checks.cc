@@ -63,12 +63,6 @@ std::vector<std::string> check_method(const RunParameters& parameters, const Ent
 {
   std::vector<std::string> out;
   const mpm::SceneParameters& scene = parameters.scene;
-  const OutputParameters& output = parameters.output;
-  if ((parameters.method == Method::fe || parameters.hybrid.enabled) &&
-      (output.checkpoint_step_interval > 0 || output.checkpoint_wall_interval > 0))
-    add(out, locator, "Output/Checkpoint step interval",
-        "Output/Checkpoint step interval, Output/Checkpoint wall interval: checkpoints are "
-        "written by pure-MPM scenes only (the FE far field has no checkpoint yet); set both to 0");
   if (parameters.method == Method::fe)
   {
     if (parameters.hybrid.enabled)

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -162,6 +163,12 @@ public:
   std::vector<dealii::Tensor<1, 3>> interface_reactions() const;
   /// velocity_driven: velocities of the interface nodes at the end of the next step.
   void set_interface_velocities(const std::vector<dealii::Tensor<1, 3>>& velocities);
+
+  /// The evolving state of this rank in binary (collective only through the caller's order);
+  /// restore() on a solver set up from the same deck on the same rank count continues the
+  /// explicit run bit for bit. Throws std::runtime_error on a mismatch or a short stream.
+  void save(std::ostream& out) const;
+  void restore(std::istream& in);
 
   /// Writes fe_mesh_NNNNN.h5 into directory and rewrites directory/fe_mesh.xdmf with all
   /// outputs so far (displacement, velocity, cell stress, failure flag, rank).

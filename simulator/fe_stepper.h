@@ -37,6 +37,10 @@ public:
 
   fem::FarFieldSolver* fe_side() override { return solver.get(); }
 
+  bool can_checkpoint() const override { return true; }
+  void save(std::ostream& out) const override { solver->save(out); }
+  void restore(std::istream& in) override { solver->restore(in); }
+
 private:
   fem::FeSceneParameters parameters;
   std::unique_ptr<fem::FarFieldSolver> solver;

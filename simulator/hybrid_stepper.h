@@ -40,6 +40,10 @@ public:
   const mpm::Solver* mpm_side() const override { return &solver.mpm(); }
   fem::FarFieldSolver* fe_side() override { return &solver.fe(); }
 
+  bool can_checkpoint() const override { return true; }
+  void save(std::ostream& out) const override { solver.save(out); }
+  void restore(std::istream& in) override { solver.restore(in); }
+
 private:
   coupling::HybridSolver solver;
   ProjectileStart projectile;

@@ -21,10 +21,15 @@ void MeshSeries::write(Stepper& stepper)
 
 void MeshSeries::start(Stepper& stepper) { write(stepper); }
 
-void MeshSeries::resume(Stepper& stepper, const io::RunProgress&)
+void MeshSeries::resume(Stepper&, const io::RunProgress& progress)
 {
-  throw std::logic_error(std::string(stepper.method()) +
-                         " runs cannot resume their FE mesh series yet");
+  // The far field's own checkpoint holds the XDMF records; the schedule is the particles'.
+  schedule.set_next_time(progress.next_output);
+}
+
+void MeshSeries::save_progress(io::RunProgress& progress) const
+{
+  progress.next_output = schedule.next_time(); // the particles' schedule too, when both exist
 }
 
 void MeshSeries::after_step(Stepper& stepper)

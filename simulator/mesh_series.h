@@ -16,7 +16,7 @@ public:
   void resume(Stepper& stepper, const io::RunProgress& progress) override;
   void after_step(Stepper& stepper) override;
   void finish(Stepper& stepper) override;
-  void save_progress(io::RunProgress&) const override {}
+  void save_progress(io::RunProgress& progress) const override;
   std::string last_state() const override;
 
 private:

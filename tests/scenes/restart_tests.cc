@@ -39,11 +39,21 @@ std::size_t n_checkpoints(const fs::path& run)
   return n;
 }
 
+/// The hybrid version of the same scene (the +-11 mm zone, explicit far field, multi step).
+std::string hybrid_arguments(const std::string& extra = "")
+{
+  return "'" + source_dir() + "/inputs/paper/anisotropic_150ms_coarse_hybrid.prm' --threads 2" +
+         " --set 'Material bullet/Model=rigid' --set 'Time/End time=1e-4'" +
+         " --set 'Output/Particle output interval=2e-5' --set 'Output/Checkpoint step interval=5' " +
+         extra;
+}
+
 /// Starts a run and sends `signal` once it has written its first checkpoint.
 void interrupt_after_first_checkpoint(const fs::path& scratch, const std::string& run, const int signal,
-                                      int& exit_status, int& killed_by)
+                                      int& exit_status, int& killed_by,
+                                      std::string (*arguments)(const std::string&) = scene_arguments)
 {
-  const pid_t pid = start_vulnus(scene_arguments("--output " + run), scratch, run);
+  const pid_t pid = start_vulnus(arguments("--output " + run), scratch, run);
   ASSERT_GT(pid, 0);
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(5);
   while (n_checkpoints(scratch / run) == 0 && std::chrono::steady_clock::now() < give_up)
@@ -72,6 +82,9 @@ nlohmann::json summary_without_timing(const fs::path& run)
   nlohmann::json s = nlohmann::json::parse(read_text(run / "summary.json"));
   s.erase("wall_seconds");
   s.erase("particle_steps_per_second");
+  if (s.contains("hybrid"))
+    for (const char* key : {"mpm_seconds", "coupling_and_fe_seconds"})
+      s["hybrid"].erase(key);
   return s;
 }
 
@@ -180,6 +193,48 @@ TEST_F(Restart, AForgottenSetEntryIsNamed)
   EXPECT_EQ(r.err.find("skipped"), std::string::npos) << r.err;
 }
 
+// A hybrid run killed mid-way continues bit for bit: the MPM zone, the far field (vectors,
+// quadrature-point histories, mesh output records) and the coupling's window state.
+TEST(HybridRestart, KilledRunContinuesBitForBit)
+{
+  ScratchDirectory scratch("hybrid_restart");
+  const CommandResult reference = run_vulnus("run " + hybrid_arguments("--output reference"), scratch.path);
+  ASSERT_EQ(reference.exit_status, 0) << reference.err;
+  int status = 0, signal = 0;
+  interrupt_after_first_checkpoint(scratch.path, "killed", SIGKILL, status, signal, hybrid_arguments);
+  ASSERT_EQ(signal, SIGKILL) << "the run ended before it could be killed";
+  const CommandResult r = run_vulnus("run " + hybrid_arguments("--restart killed"), scratch.path);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.out.find("restarted from"), std::string::npos);
+  expect_identical_runs(scratch.path / "reference", scratch.path / "killed");
+  EXPECT_EQ(read_text(scratch.path / "reference" / "fe_mesh.xdmf"),
+            read_text(scratch.path / "killed" / "fe_mesh.xdmf"));
+}
+
+/// The pure-FE pulse deck with a checkpoint every 5 steps.
+std::string fe_arguments(const std::string& extra = "")
+{
+  return "'" + source_dir() + "/inputs/verification/fe_slab_pulse.prm'" +
+         " --set 'Output/Checkpoint step interval=5' " + extra;
+}
+
+TEST(FeRestart, KilledRunContinuesBitForBit)
+{
+  ScratchDirectory scratch("fe_restart");
+  const CommandResult reference = run_vulnus("run " + fe_arguments("--output reference"), scratch.path);
+  ASSERT_EQ(reference.exit_status, 0) << reference.err;
+  int status = 0, signal = 0;
+  interrupt_after_first_checkpoint(scratch.path, "killed", SIGKILL, status, signal, fe_arguments);
+  ASSERT_EQ(signal, SIGKILL) << "the run ended before it could be killed";
+  const CommandResult r = run_vulnus("run " + fe_arguments("--restart killed"), scratch.path);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_EQ(summary_without_timing(scratch.path / "reference"),
+            summary_without_timing(scratch.path / "killed"));
+  for (const char* file : {"history.csv", "fe_mesh.xdmf"})
+    EXPECT_EQ(read_text(scratch.path / "reference" / file), read_text(scratch.path / "killed" / file))
+      << file;
+}
+
 TEST(RestartRefusals, NoCheckpointHybridAndOutputTogether)
 {
   ScratchDirectory scratch("restart_refusals");
@@ -188,10 +243,11 @@ TEST(RestartRefusals, NoCheckpointHybridAndOutputTogether)
   EXPECT_EQ(r.exit_status, 1);
   EXPECT_NE(r.err.find("no checkpoint in 'empty/checkpoints'"), std::string::npos) << r.err;
 
+  // A hybrid run restarts like a pure one: without checkpoints it says so.
   r = run_vulnus("run '" + source_dir() + "/inputs/paper/anisotropic_150ms_coarse_hybrid.prm' --restart empty",
                  scratch.path);
-  EXPECT_EQ(r.exit_status, 2);
-  EXPECT_NE(r.err.find("only pure-MPM runs can be restarted"), std::string::npos) << r.err;
+  EXPECT_EQ(r.exit_status, 1);
+  EXPECT_NE(r.err.find("no checkpoint in 'empty/checkpoints'"), std::string::npos) << r.err;
 
   // Checkpoints of a 2-rank run restarted on one process: the counts named, exit 2.
   fs::create_directories(scratch.path / "two_ranks" / "checkpoints" / "rank_0");
