@@ -1,6 +1,7 @@
 """The table and comparison picture of a study (scripts/study): one row per run with its
 varied values, exit status and the main wound figures of its summary.json."""
 import csv
+import os
 
 import numpy as np
 
@@ -53,7 +54,10 @@ class StudyRun:
         self.status, self.summary = None, None
 
     def label(self):
-        return "\n".join(str(v) for v in self.values.values()) or self.name
+        # A deck path is shown by its name alone.
+        shown = [os.path.splitext(os.path.basename(v))[0] if str(v).endswith(".prm") else str(v)
+                 for v in self.values.values()]
+        return "\n".join(shown) or self.name
 
     def figure(self, header):
         getter = dict(FIGURES)[header]
