@@ -164,7 +164,7 @@ std::string usage_text()
          "      Run the scene of a deck; results go to DIR (default runs/<deck name>).\n"
          "      --set overrides any deck entry (repeatable), checked like a deck line.\n"
          "  vulnus run DECK.prm --restart RUN_DIR [--set ...] [--threads N]\n"
-         "      Continue a pure-MPM run from the newest complete checkpoint in RUN_DIR (written\n"
+         "      Continue a run (MPM, hybrid or FE) from the newest complete checkpoint in RUN_DIR (written\n"
          "      at Output/Checkpoint intervals and on SIGINT/SIGTERM); the deck's physics must\n"
          "      match the checkpoint's, Time/End time may grow.\n"
          "  vulnus check DECK.prm [--set ...]\n"

@@ -5,7 +5,6 @@
 #include "fem/far_field_solver.h"
 #include "materials/material.h"
 
-#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>
@@ -136,9 +135,6 @@ struct FarFieldSolver::Data
   ImplicitStepStatistics implicit_statistics;
   std::shared_ptr<ImplicitData>
       implicit; ///< matrix and preconditioner (shared_ptr: incomplete type)
-
-  std::vector<dealii::XDMFEntry> xdmf_entries;
-  unsigned int n_outputs = 0;
 
   bool is_implicit() const { return prm.integrator != TimeIntegrator::central_difference; }
 

@@ -12,6 +12,7 @@
 #include <deal.II/base/types.h>
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <iosfwd>
 #include <memory>
@@ -89,6 +90,19 @@ struct ImplicitStepStatistics
 /// their masters through AffineConstraints.
 ///
 /// MPI: every call is collective unless stated otherwise.
+/// The far field's mesh for output: every vertex once, at its current position, joined into
+/// the active cells as linear hexahedra (a quadratic element's mid-side nodes are left out).
+struct FeMeshForOutput
+{
+  std::vector<double> positions;    ///< n_vertices x 3, m (reference + displacement)
+  std::vector<double> displacement; ///< n_vertices x 3, m
+  std::vector<double> velocity;     ///< n_vertices x 3, m/s
+  std::vector<std::int32_t> hexahedra; ///< n_cells x 8 vertex indices, XDMF/VTK corner order
+  std::vector<double> stress;          ///< n_cells x 6 Cauchy stress, Pa, xx yy zz xy yz xz
+  std::vector<std::uint8_t> failure;   ///< n_cells: the most failed flag of the cell's points
+  std::vector<std::uint32_t> rank;     ///< n_cells: the owning MPI rank
+};
+
 class FarFieldSolver
 {
 public:
@@ -170,9 +184,9 @@ public:
   void save(std::ostream& out) const;
   void restore(std::istream& in);
 
-  /// Writes fe_mesh_NNNNN.h5 into directory and rewrites directory/fe_mesh.xdmf with all
-  /// outputs so far (displacement, velocity, cell stress, failure flag, rank).
-  void write_output(const std::string& directory);
+  /// Collective: the mesh at the current time for output, gathered on rank 0 (empty on the
+  /// other ranks).
+  FeMeshForOutput mesh_for_output() const;
 
   struct Data;
 

@@ -1,16 +1,11 @@
 // Binary save and restore of the far field's evolving state on this rank (the mesh, dofs and
 // partition are rebuilt from the deck by setup(), so a restart needs the same rank count):
 // the solution vectors, the raw force vectors the diagnostics read, the quadrature-point
-// histories and cell fields, the boundary impulses, the running energies and the mesh
-// output's XDMF records.
+// histories and cell fields, the boundary impulses and the running energies.
 #include "fem/far_field_data.h"
 #include "mpm/binary_io.h"
 
-#include <boost/archive/binary_iarchive.hpp>
-#include <boost/archive/binary_oarchive.hpp>
-#include <boost/serialization/vector.hpp>
 
-#include <sstream>
 
 namespace vulnus::fem
 {
@@ -78,13 +73,6 @@ void FarFieldSolver::save(std::ostream& out) const
   binary::put(out, d.dissipated_energy);
   binary::put(out, d.n_failed_points);
   binary::put(out, d.last_warned_failures);
-  binary::put(out, d.n_outputs);
-  std::ostringstream entries;
-  {
-    boost::archive::binary_oarchive archive(entries);
-    archive << d.xdmf_entries;
-  }
-  binary::put_text(out, entries.str());
   out.write(tag, sizeof(tag));
   if (!out)
     throw std::runtime_error("FE checkpoint could not be written");
@@ -147,14 +135,6 @@ void FarFieldSolver::restore(std::istream& in)
   binary::get(in, d.dissipated_energy);
   binary::get(in, d.n_failed_points);
   binary::get(in, d.last_warned_failures);
-  binary::get(in, d.n_outputs);
-  std::string entries;
-  binary::get_text(in, entries);
-  {
-    std::istringstream stream(entries);
-    boost::archive::binary_iarchive archive(stream);
-    archive >> d.xdmf_entries;
-  }
   binary::expect_tag(in, tag, "FE checkpoint is incomplete (no trailer)");
 }
 } // namespace vulnus::fem

@@ -17,7 +17,9 @@ namespace
 {
 using namespace mpm::binary;
 
-constexpr char header_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '1'};
+// Format 2 added the mesh output list; format 1 files are refused by name.
+constexpr char header_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '2'};
+constexpr char format_1_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '1'};
 constexpr char trailer_tag[8] = {'V', 'U', 'L', 'N', 'E', 'N', 'D', '1'};
 constexpr const char* prefix = "step_";
 constexpr const char* suffix = ".chk";
@@ -45,6 +47,7 @@ std::string CheckpointStore::write(const std::uint64_t step, const RunProgress& 
                           put(out, progress.history_bytes);
                           put(out, progress.wall_seconds);
                           put_text(out, progress.output_records);
+                          put_text(out, progress.mesh_output_records);
                           write_state(out);
                           out.write(trailer_tag, sizeof(trailer_tag));
                         });
@@ -106,13 +109,20 @@ RunProgress CheckpointStore::read_newest(const std::function<void(std::istream&)
       std::ifstream in(candidate, std::ios::binary);
       if (!in)
         throw std::runtime_error("it cannot be opened");
-      expect_tag(in, header_tag, "it is not a vulnus run checkpoint");
+      char tag[sizeof(header_tag)] = {};
+      in.read(tag, sizeof(tag));
+      if (in && std::equal(tag, tag + sizeof(tag), format_1_tag))
+        throw std::runtime_error("it was written by an older vulnus (checkpoint format 1, "
+                                 "without the mesh output list)");
+      if (!in || !std::equal(tag, tag + sizeof(tag), header_tag))
+        throw std::runtime_error("it is not a vulnus run checkpoint");
       RunProgress progress;
       get_text(in, progress.resolved_deck);
       get(in, progress.next_output);
       get(in, progress.history_bytes);
       get(in, progress.wall_seconds);
       get_text(in, progress.output_records);
+      get_text(in, progress.mesh_output_records);
       read_state(in);
       expect_tag(in, trailer_tag, "it is incomplete (no end tag)");
       path = candidate;

@@ -1,6 +1,6 @@
 // The checkpoints of a run directory: `checkpoints/step_NNNNNNNNNN.chk`, each written to a
 // temporary name and renamed, the newest `keep` kept. A checkpoint holds the run's own
-// progress (resolved deck, next output time, history length, wall time, particle-output list)
+// progress (resolved deck, next output time, history length, wall time, particle and mesh output lists)
 // followed by the solver's state, and ends with a tag; restart takes the newest one that
 // reads completely and skips (with a warning) any that does not.
 #pragma once
@@ -20,7 +20,8 @@ struct RunProgress
   double next_output = 0.0;       ///< simulated time of the next particle output
   std::uint64_t history_bytes = 0; ///< length of history.csv at the checkpoint
   double wall_seconds = 0.0;      ///< wall time spent up to the checkpoint
-  std::string output_records;     ///< ParticleOutput::save_records
+  std::string output_records;      ///< XdmfSeries::save_records of the particles
+  std::string mesh_output_records; ///< XdmfSeries::save_records of the FE mesh
 };
 
 class CheckpointStore

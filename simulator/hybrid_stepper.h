@@ -39,6 +39,10 @@ public:
 
   const mpm::Solver* mpm_side() const override { return &solver.mpm(); }
   fem::FarFieldSolver* fe_side() override { return &solver.fe(); }
+  std::int32_t fe_material_id() const override
+  {
+    return static_cast<std::int32_t>(solver.scene().coupled_body);
+  }
 
   bool can_checkpoint() const override { return true; }
   void save(std::ostream& out) const override { solver.save(out); }

@@ -5,12 +5,12 @@
 
 namespace vulnus::simulator
 {
-io::ParticleSnapshot mpm_snapshot(const mpm::Solver& solver)
+io::Snapshot mpm_snapshot(const mpm::Solver& solver)
 {
-  using Kind = io::ParticleSnapshot::FieldKind;
+  using Kind = io::Snapshot::FieldKind;
   const mpm::Particles& p = solver.points();
   const std::size_t n = p.size();
-  io::ParticleSnapshot s(n);
+  io::Snapshot s(n);
   // Arrays are borrowed and derived fields computed while writing (no memory per point): the
   // snapshot is written before the solver steps again.
   s.borrow_positions(n ? p.position[0].data() : nullptr);
@@ -49,6 +49,16 @@ io::ParticleSnapshot mpm_snapshot(const mpm::Solver& solver)
               }
             });
   s.borrow_vector("reference_position", n ? p.reference_position[0].data() : nullptr);
+  s.compute("displacement", Kind::vector, [&p](std::size_t first, std::size_t count, void* out) {
+    auto* u = static_cast<double*>(out);
+    for (std::size_t i = 0; i < count; ++i)
+      for (int c = 0; c < 3; ++c)
+        u[3 * i + c] = p.position[first + i][c] - p.reference_position[first + i][c];
+  });
+  const std::int32_t rank = solver.rank_group().rank();
+  s.compute("rank", Kind::integer, [rank](std::size_t, std::size_t count, void* out) {
+    std::fill_n(static_cast<std::int32_t*>(out), count, rank);
+  });
   return s;
 }
 } // namespace vulnus::simulator

@@ -3,7 +3,7 @@
 // unless an output was just written at that time.
 #pragma once
 
-#include "io/particle_output.h"
+#include "io/xdmf_series.h"
 #include "simulator/output_schedule.h"
 #include "simulator/postprocessor.h"
 
@@ -29,7 +29,7 @@ private:
   void write(const Stepper& stepper);
 
   std::string directory;
-  io::ParticleOutput output;
+  io::XdmfSeries output;
   OutputSchedule schedule;
 };
 } // namespace vulnus::simulator

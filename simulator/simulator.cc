@@ -45,7 +45,8 @@ std::vector<std::unique_ptr<Postprocessor>> postprocessors_of(Stepper& stepper,
       directory.path(), parameters.output.particle_interval, end, stepper.communicator()));
   if (stepper.fe_side() != nullptr)
     list.push_back(
-      std::make_unique<MeshSeries>(directory.path(), parameters.output.particle_interval, end));
+      std::make_unique<MeshSeries>(directory.path(), parameters.output.particle_interval, end,
+                                   stepper.fe_material_id(), stepper.communicator()));
   return list;
 }
 

@@ -78,6 +78,9 @@ public:
   virtual const mpm::Solver* mpm_side() const { return nullptr; }
   /// The far field, for the mesh output; null without an FE side.
   virtual fem::FarFieldSolver* fe_side() { return nullptr; }
+  /// The body index of the far field's material among the scene's bodies (the mesh output's
+  /// material_id, which the particles share).
+  virtual std::int32_t fe_material_id() const { return 0; }
 
   /// Checkpoints: a stepper that cannot save its state is stopped without one.
   virtual bool can_checkpoint() const { return false; }

@@ -3,7 +3,7 @@
 #include "io/atomic_file.h"
 #include "io/csv_history.h"
 #include "io/disk_space.h"
-#include "io/particle_output.h"
+#include "io/xdmf_series.h"
 #include "io/summary_json.h"
 
 #include "command_runner.h"
@@ -48,18 +48,18 @@ void expect_no_temporaries(const fs::path& directory)
 // Borrowed arrays are written as they are when write() runs; a symmetric tensor borrowed in
 // Voigt order (xx yy zz xy yz xz) is stored in XDMF's Tensor6 order (XX XY XZ YY YZ ZZ), the
 // order ParaView's readers expand it by; the points get a Polyvertex connectivity 0..N-1.
-TEST(ParticleOutput, BorrowedArraysAndTensor6)
+TEST(XdmfSeries, BorrowedArraysAndTensor6)
 {
   ScratchDirectory scratch("particles_borrowed");
   const std::vector<double> x = {0, 0, 0, 1, 2, 3};
   std::vector<double> v = {1, 0, 0, 0, 1, 0};
   const std::vector<double> voigt = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
-  ParticleSnapshot snapshot(2);
+  Snapshot snapshot(2);
   snapshot.borrow_positions(x.data());
   snapshot.borrow_vector("velocity", v.data());
   snapshot.borrow_symmetric_tensor("stress", voigt.data());
   v[4] = 42.0; // borrowed, not copied
-  ParticleOutput output(scratch.path.string());
+  XdmfSeries output(scratch.path.string());
   const std::string path = output.write(1e-6, snapshot);
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
@@ -81,7 +81,7 @@ TEST(ParticleOutput, BorrowedArraysAndTensor6)
 
 // Computed fields are written in chunks of rows: 20 rows in chunks of 7 (7, 7, 6) land in
 // the right rows; float and unsigned arrays are converted to the file's double and int32.
-TEST(ParticleOutput, ComputedFieldsInChunksAndConvertedArrays)
+TEST(XdmfSeries, ComputedFieldsInChunksAndConvertedArrays)
 {
   ScratchDirectory scratch("particles_chunks");
   const std::size_t n = 20;
@@ -100,25 +100,25 @@ TEST(ParticleOutput, ComputedFieldsInChunksAndConvertedArrays)
     expected_half[i] = 0.5 * static_cast<double>(i);
     expected_thrice[i] = 3.0 * static_cast<double>(i);
   }
-  ParticleSnapshot snapshot(n);
+  Snapshot snapshot(n);
   snapshot.set_rows_per_chunk(7);
   snapshot.borrow_vector("reference_position", reference.data());
   snapshot.borrow_integer("id", ids.data());
   std::vector<std::size_t> calls;
-  snapshot.compute("half", ParticleSnapshot::FieldKind::scalar,
+  snapshot.compute("half", Snapshot::FieldKind::scalar,
                    [&calls](std::size_t first, std::size_t count, void* out)
                    {
                      calls.push_back(count);
                      for (std::size_t i = 0; i < count; ++i)
                        static_cast<double*>(out)[i] = 0.5 * static_cast<double>(first + i);
                    });
-  snapshot.compute("thrice", ParticleSnapshot::FieldKind::integer,
+  snapshot.compute("thrice", Snapshot::FieldKind::integer,
                    [](std::size_t first, std::size_t count, void* out)
                    {
                      for (std::size_t i = 0; i < count; ++i)
                        static_cast<std::int32_t*>(out)[i] = static_cast<std::int32_t>(3 * (first + i));
                    });
-  ParticleOutput output(scratch.path.string());
+  XdmfSeries output(scratch.path.string());
   const std::string path = output.write(0.0, snapshot);
   EXPECT_EQ(calls, (std::vector<std::size_t>{7, 7, 6}));
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -133,7 +133,7 @@ TEST(ParticleOutput, ComputedFieldsInChunksAndConvertedArrays)
   EXPECT_THROW(snapshot.set_rows_per_chunk(0), std::invalid_argument);
 }
 
-TEST(ParticleOutput, RoundTripThroughHdf5AndXdmfNamesDatasets)
+TEST(XdmfSeries, RoundTripThroughHdf5AndXdmfNamesDatasets)
 {
   ScratchDirectory scratch("particles");
   const std::size_t n = 3;
@@ -143,12 +143,12 @@ TEST(ParticleOutput, RoundTripThroughHdf5AndXdmfNamesDatasets)
   const std::vector<double> stress = {1, 2, 3, 4, 5, 6, 0, 0, 0, 0, 0, 0, 7, 8, 9, 10, 11, 12};
   const std::vector<std::uint8_t> failure = {0, 1, 3};
 
-  ParticleSnapshot snapshot(n);
+  Snapshot snapshot(n);
   snapshot.borrow_positions(x.data());
   snapshot.borrow_vector("velocity", v.data());
   snapshot.borrow_scalar("mass", mass.data());
   // Voigt xx yy zz xy yz xz expanded to a row-major full tensor while writing.
-  snapshot.compute("stress", ParticleSnapshot::FieldKind::tensor,
+  snapshot.compute("stress", Snapshot::FieldKind::tensor,
                    [&stress](std::size_t first, std::size_t count, void* out)
                    {
                      static const unsigned int voigt_of[9] = {0, 3, 5, 3, 1, 4, 5, 4, 2};
@@ -159,10 +159,10 @@ TEST(ParticleOutput, RoundTripThroughHdf5AndXdmfNamesDatasets)
                    });
   snapshot.borrow_integer("failure", failure.data());
   EXPECT_THROW(snapshot.borrow_scalar("mass", mass.data()), std::invalid_argument);
-  EXPECT_THROW(snapshot.compute("empty", ParticleSnapshot::FieldKind::scalar, {}),
+  EXPECT_THROW(snapshot.compute("empty", Snapshot::FieldKind::scalar, {}),
                std::invalid_argument);
 
-  ParticleOutput output(scratch.path.string());
+  XdmfSeries output(scratch.path.string());
   const std::string first = output.write(0.0, snapshot);
   const std::string second = output.write(2.5e-6, snapshot);
   EXPECT_EQ(fs::path(first).filename(), "particles_00000.h5");

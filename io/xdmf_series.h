@@ -1,7 +1,9 @@
-// Particle output as HDF5 + XDMF for ParaView: one HDF5 file per output time
-// (`particles_NNNNN.h5`: positions and named fields) written atomically, and one XDMF time
-// series (`particles.xdmf`, Polyvertex topology, Temporal collection) rewritten atomically
-// after each output so that ParaView can open it at any moment. Plain HDF5 C API.
+// HDF5 + XDMF time series for ParaView, of points (the particles: Polyvertex topology) or
+// of a hexahedral mesh (the far field: shared nodes, Hexahedron topology, fields on nodes or
+// cells): one HDF5 file per output time (`<base>_NNNNN.h5`: positions, connectivity and
+// named fields) written atomically, and one XDMF 3 series (`<base>.xdmf`, Temporal
+// collection, times at full precision) rewritten atomically after each output so that
+// ParaView can open it at any moment. Plain HDF5 C API.
 #pragma once
 
 #include <mpi.h>
@@ -15,12 +17,19 @@
 
 namespace vulnus::io
 {
-/// The particle set at one output time: positions and named per-particle fields. Fields are
+/// The points (particles or mesh nodes) at one output time: positions, optionally the
+/// hexahedra joining them, and named fields on the points or on the hexahedra. Fields are
 /// borrowed (a pointer to the caller's array, which must stay unchanged until the snapshot is
 /// written) or computed in chunks of rows while writing, so output costs no memory per point.
-class ParticleSnapshot
+class Snapshot
 {
 public:
+  /// Where a field lives: one row per point, or one per hexahedron.
+  enum class Center
+  {
+    node,
+    cell
+  };
   enum class FieldKind
   {
     scalar, ///< n values, double
@@ -49,25 +58,38 @@ public:
     const void* borrowed = nullptr; ///< the whole array, or null for a computed field
     Element element = Element::float64;
     Fill fill;
+    Center center = Center::node;
   };
 
-  explicit ParticleSnapshot(std::size_t n_particles);
+  explicit Snapshot(std::size_t n_particles);
 
   std::size_t n_particles() const { return n; }
 
   /// n x 3 coordinates, interleaved x y z (an array of Eigen::Vector3d can be passed as
   /// `positions[0].data()`); written as zeros when never set.
   void borrow_positions(const double* xyz) { borrowed_positions = xyz; }
-  void borrow_scalar(const std::string& name, const double* values);
+  /// Joins the points into hexahedra: n_cells x 8 point indices, in XDMF's (and VTK's)
+  /// order: the bottom face counter-clockwise seen from above, then the top face. Without
+  /// hexahedra the points are written as a Polyvertex. A snapshot with hexahedra is written
+  /// by one process.
+  void set_hexahedra(std::vector<std::int32_t> connectivity);
+  std::size_t n_cells() const { return hexahedra.size() / 8; }
+  const std::vector<std::int32_t>& hexahedron_corners() const { return hexahedra; }
+
+  /// Fields with Center::cell have one row per hexahedron, the others one per point.
+  void borrow_scalar(const std::string& name, const double* values, Center center = Center::node);
   /// n x 3, interleaved.
-  void borrow_vector(const std::string& name, const double* values);
-  void borrow_vector(const std::string& name, const float* values);
+  void borrow_vector(const std::string& name, const double* values, Center center = Center::node);
+  void borrow_vector(const std::string& name, const float* values, Center center = Center::node);
   /// n x 6 in Voigt order xx yy zz xy yz xz, stored as 6 components (XDMF Tensor6).
-  void borrow_symmetric_tensor(const std::string& name, const double* voigt);
-  void borrow_integer(const std::string& name, const std::uint8_t* values);
-  void borrow_integer(const std::string& name, const std::uint32_t* values);
+  void borrow_symmetric_tensor(const std::string& name, const double* voigt,
+                               Center center = Center::node);
+  void borrow_integer(const std::string& name, const std::uint8_t* values,
+                      Center center = Center::node);
+  void borrow_integer(const std::string& name, const std::uint32_t* values,
+                      Center center = Center::node);
   /// A field produced chunk by chunk while writing (values derived from several arrays).
-  void compute(const std::string& name, FieldKind kind, Fill fill);
+  void compute(const std::string& name, FieldKind kind, Fill fill, Center center = Center::node);
 
   /// Rows computed at a time (memory of a computed field while writing: rows x components).
   void set_rows_per_chunk(std::size_t rows);
@@ -83,21 +105,22 @@ private:
   std::size_t n;
   std::size_t chunk_rows = 65536;
   const double* borrowed_positions = nullptr;
+  std::vector<std::int32_t> hexahedra;
   std::vector<Field> field_list;
 };
 
-class ParticleOutput
+class XdmfSeries
 {
 public:
   /// Outputs go to `directory` (must exist) as `<base>_NNNNN.h5` and `<base>.xdmf`. With a
   /// communicator of several ranks, write() is collective: each rank passes its own points
   /// and all of them land in one file (parallel HDF5); rank 0 writes the XDMF series.
-  explicit ParticleOutput(const std::string& directory, const std::string& base = "particles",
+  explicit XdmfSeries(const std::string& directory, const std::string& base = "particles",
                           MPI_Comm communicator = MPI_COMM_NULL);
 
   /// Write the snapshot at `time` (s): the HDF5 file, then the XDMF series. Returns the path
   /// of the HDF5 file. Throws std::runtime_error if a file cannot be written.
-  std::string write(double time, const ParticleSnapshot& snapshot);
+  std::string write(double time, const Snapshot& snapshot);
 
   unsigned int n_outputs() const { return static_cast<unsigned int>(records.size()); }
   /// True when the newest output was written at `time` (a final output would repeat it, and
@@ -120,13 +143,15 @@ private:
   struct FieldRecord
   {
     std::string name;
-    ParticleSnapshot::FieldKind kind;
+    Snapshot::FieldKind kind;
+    Snapshot::Center center;
   };
   struct Record
   {
     double time;
     std::string file_name; ///< relative to the directory
     std::size_t n_particles;
+    std::size_t n_cells; ///< hexahedra; 0 for a Polyvertex of the points
     std::vector<FieldRecord> fields;
   };
 
@@ -144,7 +169,7 @@ private:
 /// `/positions` (n x 3), one dataset per field named after it, and the attribute `time` on
 /// the root group. With a communicator of several ranks (collective): every rank's snapshot
 /// goes to rows [first_row, first_row + its size) of datasets of `total_rows` rows.
-void write_particle_hdf5(const std::string& path, double time, const ParticleSnapshot& snapshot,
+void write_snapshot_hdf5(const std::string& path, double time, const Snapshot& snapshot,
                          MPI_Comm communicator = MPI_COMM_NULL, std::size_t first_row = 0,
                          std::size_t total_rows = 0);
 } // namespace vulnus::io
