@@ -7,6 +7,19 @@
 
 namespace vulnus::analysis
 {
+std::string projectile_fate(const mpm::ProjectileExit& exit, const double velocity_now,
+                            const double initial_speed)
+{
+  if (exit.recorded)
+    return exit.past_exit_plane ? "left the target through its far side"
+                                : "left the target obliquely, sideways or backwards";
+  if (velocity_now < -0.01 * initial_speed)
+    return "moving backwards inside the target";
+  if (velocity_now <= 0.01 * initial_speed)
+    return "stopped in the target";
+  return "still inside the target";
+}
+
 namespace
 {
 const char* face_condition_name(const mpm::FaceCondition c)
@@ -73,6 +86,7 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
     bullet["exit_time_s"] = exit.recorded ? nlohmann::json(exit.time) : nlohmann::json();
     bullet["exit_velocity_m_s"] = speed;
     bullet["velocity_now_m_s"] = b.velocity.dot(axis);
+    bullet["fate"] = projectile_fate(exit, b.velocity.dot(axis), totals.projectile_initial_speed);
     bullet["kinetic_energy_lost_J"] = totals.projectile_initial_kinetic_energy - kinetic;
     bullet["max_von_mises_over_yield"] = solver.peak_von_mises_over_yield()[projectile];
     bullet["position_m"] = {b.centroid[0], b.centroid[1], b.centroid[2]};

@@ -38,6 +38,13 @@ inline double relative_balance_error(const double energy, const double initial)
 /// `sample`: the target's failed points and intact totals over all ranks
 /// (collect_wound_sample, complete on rank 0), `d`: the diagnostics over all ranks,
 /// `supports`: Solver::support_impulses (collective, so taken by the caller on every rank).
+/// What became of the projectile, in words (summary "fate"): left the target through its far
+/// side, left it obliquely, sideways or backwards (clear of it before its tail passed the
+/// plane through its far corner), stopped in it (|v| <= 1 % of the initial speed along
+/// the flight), moving backwards inside it, or still inside it.
+std::string projectile_fate(const mpm::ProjectileExit& exit, double velocity_now,
+                            double initial_speed);
+
 nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
                            const WoundSample& sample, const mpm::SceneDiagnostics& d,
                            const std::array<mpm::Vector3, 6>& supports);

@@ -316,7 +316,7 @@ bool Solver::finished() const
 {
   if (current_time >= parameters.end_time * (1.0 - 1e-12))
     return true;
-  return stops_at_projectile_exit() && projectile_tail() > exit_plane;
+  return stops_at_projectile_exit() && exit_record.recorded;
 }
 
 bool Solver::stops_at_projectile_exit() const

@@ -66,10 +66,13 @@ struct DepartedPoint
   std::uint32_t body = 0;
 };
 
-/// The projectile when its tail passed the exit plane (mean velocity, kinetic energy).
+/// The projectile when it left the target (mean velocity, kinetic energy): when its tail
+/// passed the exit plane, or, in any direction, when none of its points was within a cell of
+/// the target any more after it had been.
 struct ProjectileExit
 {
   bool recorded = false;
+  bool past_exit_plane = true;         ///< false: left the target sideways or backwards
   double time = 0.0;                   ///< s
   Vector3 velocity = Vector3::Zero();  ///< m/s, mass-weighted mean
   double kinetic_energy = 0.0;         ///< J
@@ -199,8 +202,12 @@ private:
   bool stops_at_projectile_exit() const;
   /// Collective: the smallest x . flight axis of the projectile's points.
   double projectile_tail() const;
-  /// Collective: records the projectile's exit the first time its tail passes the exit plane.
+  /// Collective: records the projectile's exit the first time its tail passes the exit plane
+  /// or it comes clear of the target (after having been near it).
   void record_projectile_exit();
+  /// Collective: whether a projectile point lies within a cell of the box holding the target's
+  /// points that still carry stress (debris, totally failed, is left out).
+  bool projectile_near_target() const;
   void plan_slabs();
   void rebalance_slabs();
   void migrate_points(bool to_any_rank);
@@ -237,6 +244,7 @@ private:
   int projectile_body = -1;
   Vector3 flight_axis = Vector3::UnitY();
   double exit_plane = 0.0; ///< largest x . flight_axis of the other bodies at the start
+  bool projectile_reached_target = false; ///< a projectile point has been near the target
 
   double current_time = 0.0;
   double time_step = 0.0;

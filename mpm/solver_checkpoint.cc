@@ -49,6 +49,8 @@ void Solver::save(std::ostream& out) const
   put(out, exit_record.time);
   put(out, exit_record.velocity);
   put(out, exit_record.kinetic_energy);
+  put(out, static_cast<std::uint64_t>(exit_record.past_exit_plane));
+  put(out, static_cast<std::uint64_t>(projectile_reached_target));
   for (const Vector3& impulse : support_impulse_here)
     put(out, impulse);
   put(out, static_cast<std::uint64_t>(ranks.size()));
@@ -101,7 +103,11 @@ void Solver::restore(std::istream& in)
   get(in, exit_loaded.time);
   get(in, exit_loaded.velocity);
   get(in, exit_loaded.kinetic_energy);
+  std::uint64_t past_exit_plane = 0, reached_target = 0;
+  get(in, past_exit_plane);
+  get(in, reached_target);
   exit_loaded.recorded = exit_recorded != 0;
+  exit_loaded.past_exit_plane = past_exit_plane != 0;
   std::array<Vector3, 6> supports_loaded;
   for (Vector3& impulse : supports_loaded)
     get(in, impulse);
@@ -163,6 +169,7 @@ void Solver::restore(std::istream& in)
                         departed_packed[k + 3], static_cast<std::uint8_t>(departed_packed[k + 4]),
                         static_cast<std::uint32_t>(departed_packed[k + 5])});
   exit_record = exit_loaded;
+  projectile_reached_target = reached_target != 0;
   support_impulse_here = supports_loaded;
 }
 } // namespace vulnus::mpm

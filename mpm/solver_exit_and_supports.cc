@@ -2,14 +2,52 @@
 // when it left the target, and the impulse the domain faces' supports gave the target.
 #include "mpm/solver.h"
 
+#include <limits>
+
 namespace vulnus::mpm
 {
+bool Solver::projectile_near_target() const
+{
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Vector3 low(inf, inf, inf), high(-inf, -inf, -inf);
+  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+    if (static_cast<int>(b) != projectile_body)
+      for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
+        if (particles.failure[p] != materials::total_failure)
+        {
+          low = low.cwiseMin(particles.position[p]);
+          high = high.cwiseMax(particles.position[p]);
+        }
+  double box[6] = {-low[0], -low[1], -low[2], high[0], high[1], high[2]};
+  ranks.max(box, 6);
+  const double reach = parameters.cell_size;
+  low = Vector3(-box[0], -box[1], -box[2]).array() - reach;
+  high = Vector3(box[3], box[4], box[5]).array() + reach;
+  double near = 0.0;
+  for (std::size_t p = particles.begin_of(projectile_body); p < particles.end_of(projectile_body); ++p)
+    if ((particles.position[p].array() >= low.array()).all() &&
+        (particles.position[p].array() <= high.array()).all())
+    {
+      near = 1.0;
+      break;
+    }
+  return ranks.max(near) > 0.0;
+}
+
 void Solver::record_projectile_exit()
 {
   if (exit_record.recorded || projectile_body < 0 || particles.n_bodies() < 2)
     return;
-  if (!(projectile_tail() > exit_plane))
-    return;
+  const bool past_exit_plane = projectile_tail() > exit_plane;
+  if (!past_exit_plane)
+  {
+    const bool near = projectile_near_target();
+    if (near || !projectile_reached_target)
+    {
+      projectile_reached_target = projectile_reached_target || near;
+      return;
+    }
+  }
   double sums[5] = {0, 0, 0, 0, 0}; // mass, momentum, kinetic energy
   for (std::size_t p = particles.begin_of(projectile_body); p < particles.end_of(projectile_body); ++p)
   {
@@ -21,6 +59,7 @@ void Solver::record_projectile_exit()
   }
   ranks.sum(sums, 5);
   exit_record.recorded = true;
+  exit_record.past_exit_plane = past_exit_plane;
   exit_record.time = current_time;
   if (sums[0] > 0.0)
     exit_record.velocity = Vector3(sums[1], sums[2], sums[3]) / sums[0];

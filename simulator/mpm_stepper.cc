@@ -175,10 +175,14 @@ std::string bullet_report(const nlohmann::json& summary)
   const nlohmann::json& bullet = summary["bullet"];
   std::ostringstream o;
   if (bullet.value("exited", false))
+  {
     o << "; bullet exit velocity " << bullet["exit_velocity_m_s"].get<double>() << " m/s";
+    if (bullet.value("fate", "") != "left the target through its far side")
+      o << " (it " << bullet.value("fate", "") << ")";
+  }
   else
-    o << "; the bullet has not left the target (velocity now "
-      << bullet["velocity_now_m_s"].get<double>() << " m/s)";
+    o << "; the bullet has not left the target: " << bullet.value("fate", "still inside it")
+      << " (velocity now " << bullet["velocity_now_m_s"].get<double>() << " m/s)";
   return o.str();
 }
 } // namespace vulnus::simulator

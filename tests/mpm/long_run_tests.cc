@@ -2,6 +2,7 @@
 // happens (as in a run that stops there), the points that leave the grid are kept for the
 // wound, and the target's momentum is accounted for by what left the grid and what the domain
 // faces' supports gave it.
+#include "analysis/mpm_summary.h"
 #include "scene_fixtures.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +74,38 @@ TEST(MpmLongRun, RecordsTheExitAsTheRunThatStopsThere)
   EXPECT_LT(side_faces, -1e-3 * p0.norm());
   EXPECT_EQ(supports[2].norm() + supports[3].norm(), 0.0); // free entrance and exit faces
   EXPECT_LT(worst, 1e-10 * p0.norm());
+}
+// A slow, light ball bounces off a stiff elastic slab: its tail never passes the exit plane, and the
+// exit is recorded, going backwards, when none of its points is within a cell of the slab any
+// more; the run stops there instead of running on to the end time.
+TEST(MpmLongRun, ARicochetLeavesWhenTheProjectileIsClearOfTheTarget)
+{
+  mpm::SceneParameters scene = held_slab(true, 20e-3);
+  scene.materials[0] = test::elastic_material("gel", 2e6, 2e5); // a stiff rubber
+  scene.bodies[1].density = 1000.0;                             // a light ball
+  scene.bodies[1].initial_velocity = Vector3(0, 2, 0);
+  mpm::Solver solver(scene);
+  while (!solver.finished())
+    solver.advance();
+  const mpm::ProjectileExit& exit = solver.projectile_exit();
+  ASSERT_TRUE(exit.recorded);
+  EXPECT_FALSE(exit.past_exit_plane);
+  EXPECT_LT(solver.time(), 0.5 * scene.end_time);
+  const mpm::Particles& p = solver.points();
+  double highest = -1.0, slab_lowest = 1.0;
+  for (std::size_t i = p.begin_of(1); i < p.end_of(1); ++i)
+    highest = std::max(highest, p.position[i][1]);
+  for (std::size_t i = p.begin_of(0); i < p.end_of(0); ++i)
+    slab_lowest = std::min(slab_lowest, p.position[i][1]);
+  EXPECT_LT(highest, slab_lowest - scene.cell_size); // more than a cell below the slab
+  // It bounced: going back, at most at its initial speed (the gel is elastic, contact and
+  // transfers dissipate a little).
+  std::cout << "ricochet at t = " << exit.time << " s, velocity " << exit.velocity.transpose()
+            << " m/s\n";
+  EXPECT_LT(exit.velocity[1], -0.2 * 2.0);
+  EXPECT_GT(exit.velocity[1], -2.0);
+  EXPECT_EQ(analysis::projectile_fate(exit, exit.velocity[1], 2.0),
+            "left the target obliquely, sideways or backwards");
 }
 } // namespace
 } // namespace vulnus
