@@ -35,6 +35,20 @@ std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver)
         "one's stays put; docs/converged_wound.md section 12): a rigid projectile (Model = "
         "rigid) gives the converged answer at a much larger time step");
   }
+  if (solver.projectile() >= 0)
+  {
+    // A projectile that left the grid only in part: what is reported of it is what stayed.
+    const mpm::Particles& p = solver.points();
+    std::uint64_t counts[2] = {0, p.end_of(solver.projectile()) - p.begin_of(solver.projectile())};
+    for (const mpm::DepartedPoint& d : solver.departed_points())
+      counts[0] += static_cast<int>(d.body) == solver.projectile();
+    solver.rank_group().sum(counts, 2);
+    if (counts[0] > 0 && counts[1] > 0)
+      warnings.push_back(
+        std::to_string(counts[0]) + " of the projectile's " + std::to_string(counts[0] + counts[1]) +
+        " points left the grid and were removed: its velocity, energy and fate describe only the " +
+        std::to_string(counts[1]) + " that stayed; enlarge Grid/Domain min and max along its path");
+  }
   if (solver.removed_points() > 0)
     warnings.push_back(std::to_string(solver.removed_points()) +
                        " points left the grid and were removed; their energy is booked "

@@ -48,3 +48,20 @@ TEST(SceneWarnings, ATargetNarrowerThanTheProjectileIsFlagged)
   ASSERT_EQ(wide.exit_status, 0) << wide.out << wide.err;
   EXPECT_FALSE(mentions(warnings_of(scratch.path / "wide"), "wide across the path"));
 }
+
+// A bullet flying partly out through a free domain face loses points to the grid's edge:
+// the run says that what it reports of the bullet is only what stayed (issue 25, item 2).
+TEST(SceneWarnings, AProjectileLeavingTheGridInPartIsFlagged)
+{
+  ScratchDirectory scratch("scene_warning_partly_departed");
+  const CommandResult r = run_vulnus(
+    short_paper_run + "--set 'Body bullet/Center=0.02, -0.016, 0' "
+                      "--set 'Body bullet/Initial velocity=80, 150, 0' "
+                      "--set 'Grid/Boundary conditions/x+=free' --set 'Time/End time=1e-4' "
+                      "--output run",
+    scratch.path);
+  ASSERT_EQ(r.exit_status, 0) << r.out << r.err;
+  EXPECT_TRUE(mentions(warnings_of(scratch.path / "run"), "of the projectile's"))
+    << r.err;
+  EXPECT_NE(r.err.find("describe only the"), std::string::npos) << r.err;
+}
