@@ -2,6 +2,8 @@
 // (plain HDF5 C API and nlohmann::json; no deal.II).
 #include "analysis/compare_runs.h"
 
+#include "io/hdf5_handle.h"
+
 #include <hdf5.h>
 #include <nlohmann/json.hpp>
 
@@ -202,25 +204,7 @@ std::optional<fs::path> last_particle_file(const std::string& run)
   return last;
 }
 
-/// Closes an HDF5 handle when it goes out of scope; a negative id is an error.
-class Handle
-{
-public:
-  Handle(const hid_t id, herr_t (*close)(hid_t), const std::string& what)
-      : id(id), close_function(close)
-  {
-    if (id < 0)
-      throw CompareError(what);
-  }
-  ~Handle() { close_function(id); }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  operator hid_t() const { return id; }
-
-private:
-  hid_t id;
-  herr_t (*close_function)(hid_t);
-};
+using Handle = io::Hdf5Handle<CompareError>;
 
 /// Silences HDF5's own error printing; our messages say what failed.
 class QuietHdf5

@@ -2,6 +2,7 @@
 #include "io/xdmf_series.h"
 
 #include "io/atomic_file.h"
+#include "io/hdf5_handle.h"
 
 #include <hdf5.h>
 
@@ -35,28 +36,14 @@ unsigned int n_components(const Snapshot::FieldKind kind)
   }
 }
 
-/// Closes an HDF5 handle when it goes out of scope.
-class Handle
+/// An HDF5 handle whose failure reads "HDF5: cannot <what>".
+class Handle : public Hdf5Handle<std::runtime_error>
 {
 public:
   Handle(const hid_t id, herr_t (*close)(hid_t), const std::string& what)
-      : id(id), close_function(close)
+      : Hdf5Handle(id, close, "HDF5: cannot " + what)
   {
-    if (id < 0)
-      throw std::runtime_error("HDF5: cannot " + what);
   }
-  ~Handle()
-  {
-    if (id >= 0)
-      close_function(id);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  operator hid_t() const { return id; }
-
-private:
-  hid_t id;
-  herr_t (*close_function)(hid_t);
 };
 
 void check(const herr_t status, const std::string& what)
