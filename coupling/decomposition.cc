@@ -32,7 +32,7 @@ bool is_rigid(const mpm::SceneParameters& scene, const mpm::BodyParameters& body
 /// The projectile's axis must stay at least radius + one cell inside the zone wherever it
 /// crosses the slab (the zone may end at a slab face).
 void check_bullet_path(const mpm::SceneParameters& scene, const mpm::BodyParameters& slab,
-                       const HybridParameters& hybrid, std::vector<std::string>& problems)
+                       const HybridParameters& hybrid, std::vector<ParameterProblem>& problems)
 {
   for (const mpm::BodyParameters& body : scene.bodies)
   {
@@ -69,11 +69,11 @@ void check_bullet_path(const mpm::SceneParameters& scene, const mpm::BodyParamet
             (!upper_open && c[d] + reach > hybrid.zone_max[d]))
         {
           std::ostringstream s;
-          s << "Hybrid/Zone min, Hybrid/Zone max: the path of projectile '" << body.name
-            << "' at (" << c[0] << ", " << c[1] << ", " << c[2]
-            << ") m comes closer than its radius plus one cell to the zone's " << axis_name(d)
-            << " bounds; widen the zone so the tract and the tissue it tears stay in MPM";
-          problems.push_back(s.str());
+          s << "the path of projectile '" << body.name << "' at (" << c[0] << ", " << c[1]
+            << ", " << c[2] << ") m comes closer than its radius plus one cell to the zone's "
+            << axis_name(d) << " bounds";
+          problems.push_back({{"zone_min", "zone_max"}, s.str(),
+                              "widen the zone so the tract and the tissue it tears stay in MPM"});
           return;
         }
       }
@@ -153,29 +153,31 @@ int split_body_index(const mpm::SceneParameters& scene, const HybridParameters& 
   return found;
 }
 
-std::vector<std::string> check_decomposition(const mpm::SceneParameters& scene,
-                                             const HybridParameters& hybrid,
-                                             const fem::FeSceneParameters& far_field)
+std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& scene,
+                                                  const HybridParameters& hybrid,
+                                                  const fem::FeSceneParameters& far_field)
 {
-  std::vector<std::string> problems;
+  std::vector<ParameterProblem> problems;
   const int index = split_body_index(scene, hybrid);
   if (index < 0)
   {
-    problems.push_back(
-      hybrid.body.empty()
-        ? "Hybrid/Body: no single deformable box body that is not the projectile; name the "
-          "body to split between MPM and finite elements"
-        : "Hybrid/Body: no body named '" + hybrid.body + "'; use a name from Scene/Bodies");
+    if (hybrid.body.empty())
+      problems.push_back({{"body"},
+                          "no single deformable box body that is not the projectile",
+                          "name the body to split between MPM and finite elements"});
+    else
+      problems.push_back({{"body"}, "no body named '" + hybrid.body + "'",
+                          "use the name of one of the scene's bodies"});
     return problems;
   }
   const mpm::BodyParameters& slab = scene.bodies[index];
   if (slab.shape != mpm::BodyShape::box)
-    problems.push_back("Hybrid/Body: body '" + slab.name +
-                       "' is not a box; only a box body can be split into MPM zone and FE mesh");
+    problems.push_back({{"body"}, "body '" + slab.name + "' is not a box",
+                        "only a box body can be split into MPM zone and FE mesh"});
   if (is_rigid(scene, slab))
-    problems.push_back("Hybrid/Body: body '" + slab.name + "' is rigid; split a deformable body");
+    problems.push_back({{"body"}, "body '" + slab.name + "' is rigid", "split a deformable body"});
   if (slab.is_projectile)
-    problems.push_back("Hybrid/Body: body '" + slab.name + "' is the projectile");
+    problems.push_back({{"body"}, "body '" + slab.name + "' is the projectile", ""});
 
   const double h = scene.cell_size;
   const double tolerance = 1e-6 * h;
@@ -184,8 +186,9 @@ std::vector<std::string> check_decomposition(const mpm::SceneParameters& scene,
   {
     if (!(hybrid.zone_max[d] > hybrid.zone_min[d] + 0.5 * h))
     {
-      problems.push_back(std::string("Hybrid/Zone min, Hybrid/Zone max: the zone is empty along ") +
-                         axis_name(d) + "; Zone max must exceed Zone min by at least one cell");
+      problems.push_back({{"zone_min", "zone_max"},
+                          std::string("the zone is empty along ") + axis_name(d),
+                          "its upper bound must exceed its lower bound by at least one cell"});
       zone_inside = false;
     }
     if (hybrid.zone_min[d] < slab.box_min[d] - tolerance ||
@@ -202,36 +205,42 @@ std::vector<std::string> check_decomposition(const mpm::SceneParameters& scene,
         double node = scene.domain_min[d] + (lower ? std::floor(cells) : std::ceil(cells)) * h;
         if (node < slab.box_min[d] - tolerance || node > slab.box_max[d] + tolerance)
           node = scene.domain_min[d] + (lower ? std::ceil(cells) : std::floor(cells)) * h;
-        std::ostringstream s;
-        s << "Hybrid/Zone min, Hybrid/Zone max: " << axis_name(d) << " = " << bound
-          << " m is not on a grid node (Grid/Domain min + k * Grid/Cell size); move it to "
-          << node << " m";
-        problems.push_back(s.str());
+        std::ostringstream s, remedy;
+        s << axis_name(d) << " = " << bound
+          << " m is not on a grid node (the grid's lower corner plus whole cells)";
+        remedy << "move it to " << node << " m";
+        problems.push_back({{"zone_min", "zone_max"}, s.str(), remedy.str()});
       }
     }
   }
   if (!zone_inside)
-    problems.push_back("Hybrid/Zone min, Hybrid/Zone max: the zone (" +
-                       format_point(hybrid.zone_min) + ") to (" + format_point(hybrid.zone_max) +
-                       ") m must lie inside body '" + slab.name + "' (Box min, Box max)");
+    problems.push_back({{"zone_min", "zone_max"},
+                        "the zone (" + format_point(hybrid.zone_min) + ") to (" +
+                          format_point(hybrid.zone_max) + ") m must lie inside body '" +
+                          slab.name + "' (its box)",
+                        ""});
   bool fills_slab = true;
   for (int d = 0; d < 3; ++d)
     fills_slab = fills_slab && hybrid.zone_min[d] <= slab.box_min[d] + tolerance &&
                  hybrid.zone_max[d] >= slab.box_max[d] - tolerance;
   if (fills_slab)
-    problems.push_back("Hybrid/Zone min, Hybrid/Zone max: the zone covers the whole body '" +
-                       slab.name + "', leaving no far field; shrink it or disable Hybrid");
+    problems.push_back({{"zone_min", "zone_max"},
+                        "the zone covers the whole body '" + slab.name +
+                          "', leaving no far field",
+                        "shrink it or run without the hybrid"});
   if (far_field.far_cell_size < h)
-    problems.push_back("Far field/Far cell size: smaller than Grid/Cell size; the far field "
-                       "grows from the grid spacing at the interface");
+    problems.push_back({{"far_field.far_cell_size"}, "smaller than the MPM grid's cell size",
+                        "the far field grows from the grid spacing at the interface"});
   if (hybrid.scheme == CouplingScheme::same_step &&
       far_field.integrator != fem::TimeIntegrator::central_difference)
-    problems.push_back("Hybrid/Scheme, Far field/Integrator: the same-step scheme needs the "
-                       "explicit central-difference far field; use Scheme = multi step for an "
-                       "implicit far field");
+    problems.push_back({{"scheme", "far_field.integrator"},
+                        "the same-step scheme needs the explicit central-difference far field",
+                        "use the multi-step scheme for an implicit far field"});
   if (far_field.degree != 1)
-    problems.push_back("Far field/Element degree: the interface nodes must coincide with MPM "
-                       "grid nodes, which needs degree 1 in a hybrid scene");
+    problems.push_back({{"far_field.degree"},
+                        "the interface nodes must coincide with MPM grid nodes, which needs "
+                        "degree 1 in a hybrid scene",
+                        ""});
   if (problems.empty())
     check_bullet_path(scene, slab, hybrid, problems);
   return problems;
@@ -240,12 +249,13 @@ std::vector<std::string> check_decomposition(const mpm::SceneParameters& scene,
 HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters& hybrid,
                       const fem::FeSceneParameters& far_field)
 {
-  const std::vector<std::string> problems = check_decomposition(scene, hybrid, far_field);
+  const std::vector<ParameterProblem> problems = check_decomposition(scene, hybrid, far_field);
   if (!problems.empty())
   {
     std::ostringstream message;
     for (std::size_t i = 0; i < problems.size(); ++i)
-      message << (i ? "\n" : "") << problems[i];
+      message << (i ? "\n" : "") << "hybrid " << problems[i].parameters.front() << ": "
+              << describe(problems[i]);
     throw std::invalid_argument(message.str());
   }
   HybridScene split;

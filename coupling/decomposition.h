@@ -3,6 +3,8 @@
 // containing the bullet path.
 #pragma once
 
+#include "core/parameter_problem.h"
+
 #include "coupling/hybrid_parameters.h"
 #include "fem/fem_parameters.h"
 #include "mpm/scene_parameters.h"
@@ -21,10 +23,11 @@ struct HybridScene
   HybridParameters hybrid;
 };
 
-/// Problems with the split, each "<entries>: <problem>; <remedy>" (empty when fine).
-std::vector<std::string> check_decomposition(const mpm::SceneParameters& scene,
-                                             const HybridParameters& hybrid,
-                                             const fem::FeSceneParameters& far_field);
+/// Problems with the split (empty when fine), naming HybridParameters' members ("body",
+/// "zone_min", "zone_max", "scheme") and the far field's ("far_field.<member>").
+std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& scene,
+                                                  const HybridParameters& hybrid,
+                                                  const fem::FeSceneParameters& far_field);
 
 /// Builds the two sub-scenes. far_field supplies the FE numerics (integrator, element degree,
 /// mesh grading, tolerances); geometry, material, density, fibers, face conditions and end

@@ -61,7 +61,7 @@ public:
       return;
     std::string where = locator.where(entries.front()), names;
     for (auto e = entries.rbegin(); e != entries.rend(); ++e)
-      if (locator.where(*e).find("(default value)") == std::string::npos)
+      if (locator.is_set(*e))
         where = locator.where(*e);
     for (const std::string& e : entries)
       names += (names.empty() ? "" : ", ") + e;

@@ -163,4 +163,12 @@ std::string EntryLocator::where(const std::string& path) const
   return indices.empty() ? std::string("(default value)")
                          : indices.front()->source() + " (default value)";
 }
+
+bool EntryLocator::is_set(const std::string& path) const
+{
+  for (const LineIndex* index : indices)
+    if (index->last_set(path) != nullptr)
+      return true;
+  return false;
+}
 } // namespace vulnus::deck

@@ -68,6 +68,8 @@ public:
 
   /// "deck.prm:12", "--set 'Grid/Cell size=1e-3'", or "deck.prm (default value)".
   std::string where(const std::string& path) const;
+  /// Whether a deck line or a --set gave the entry its value (not its default).
+  bool is_set(const std::string& path) const;
 
 private:
   std::vector<const LineIndex*> indices;

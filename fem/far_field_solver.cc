@@ -59,14 +59,7 @@ double FarFieldSolver::Data::dirichlet_velocity(const DirichletDof& d, const dou
 
 FarFieldSolver::FarFieldSolver(const FeSceneParameters& parameters, const MPI_Comm communicator)
 {
-  const std::vector<std::string> problems = check_parameters(parameters);
-  if (!problems.empty())
-  {
-    std::ostringstream message;
-    for (const std::string& m : problems)
-      message << m << '\n';
-    throw std::invalid_argument(message.str());
-  }
+  require_valid(parameters);
   data = std::make_unique<Data>(parameters, communicator);
 }
 

@@ -3,6 +3,8 @@
 // conditions, material and output. Filled by the deck reader (app/) or by tests. SI units.
 #pragma once
 
+#include "core/parameter_problem.h"
+
 #include "materials/fiber_field.h"
 #include "materials/material_parameters.h"
 
@@ -140,6 +142,10 @@ struct FeSceneParameters
   double end_time = 1.0e-3; ///< s
 };
 
-/// Problems with the parameters, each "<entry>: <problem>; <what to do>" (empty when fine).
-std::vector<std::string> check_parameters(const FeSceneParameters& parameters);
+/// Problems with the parameters (empty when fine), naming FeSceneParameters' members
+/// ("cfl", "slab_min", ...; "faces.profile.duration" for a loaded face's profile).
+std::vector<ParameterProblem> check_parameters(const FeSceneParameters& parameters);
+
+/// Throws std::invalid_argument listing check_parameters' problems, if there are any.
+void require_valid(const FeSceneParameters& parameters);
 } // namespace vulnus::fem

@@ -63,14 +63,7 @@ std::vector<double> graded_step_sizes(const double lo, const double hi, const do
 
 void build_slab_mesh(const FeSceneParameters& p, dealii::Triangulation<3, 3>& triangulation)
 {
-  const std::vector<std::string> problems = check_parameters(p);
-  if (!problems.empty())
-  {
-    std::ostringstream message;
-    for (const std::string& m : problems)
-      message << m << '\n';
-    throw std::invalid_argument(message.str());
-  }
+  require_valid(p);
 
   std::vector<std::vector<double>> steps(3);
   std::vector<std::vector<double>> cell_centres(3);

@@ -15,8 +15,8 @@ using testing::zone;
 std::string all_problems(const mpm::SceneParameters& s, const HybridParameters& h)
 {
   std::string text;
-  for (const std::string& p : check_decomposition(s, h, uniform_far_field(1e-3)))
-    text += p + "\n";
+  for (const ParameterProblem& p : check_decomposition(s, h, uniform_far_field(1e-3)))
+    text += describe(p) + "\n";
   return text;
 }
 
@@ -79,7 +79,8 @@ TEST(Decomposition, RefusesAnImplicitFarFieldWithTheSameStepScheme)
   const auto problems = check_decomposition(
     s, zone({0.004, 0.004, 0.004}, {0.008, 0.008, 0.008}, CouplingScheme::same_step), f);
   ASSERT_EQ(problems.size(), 1u);
-  EXPECT_NE(problems[0].find("Scheme = multi step"), std::string::npos);
+  EXPECT_EQ(problems[0].parameters, (std::vector<std::string>{"scheme", "far_field.integrator"}));
+  EXPECT_NE(problems[0].remedy.find("multi-step scheme"), std::string::npos);
 }
 
 TEST(Decomposition, RefusesAZoneThatMissesTheBulletPath)
