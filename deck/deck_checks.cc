@@ -168,24 +168,16 @@ void check_materials(const mpm::SceneParameters& scene, Checker& check)
   for (const mpm::NamedMaterial& material : scene.materials)
   {
     const std::string section = "Material " + material.name;
-    for (const std::string& message : materials::check_parameters(material.parameters))
+    for (const ParameterProblem& problem : materials::check_parameters(material.parameters))
     {
-      // Messages start with the entry name ("c1: ..."): locate it in the model's subsection.
-      const std::size_t colon = message.find(':');
-      const std::string entry = colon == std::string::npos ? "" : message.substr(0, colon);
-      const std::string model = section + "/" + model_subsection(material.parameters.model);
-      std::string path = section + "/Model";
-      if (entry == "Matrix shear limit" || entry == "Fiber stretch limit" ||
-          entry == "Shear measure" || entry == "Enabled")
-        path = model + "/Failure/" + entry;
-      else if (!entry.empty() && entry != "Model")
-        path = model + "/" + entry;
-      const std::string rest = colon == std::string::npos ? message : message.substr(colon + 1);
-      const std::size_t semicolon = rest.find(';');
-      const std::string problem = trim(rest.substr(0, semicolon));
-      const std::string remedy = semicolon == std::string::npos ? "see `vulnus --print-parameters`"
-                                                                : trim(rest.substr(semicolon + 1));
-      check.require(false, path, problem, remedy);
+      // Parameters are named as in the model's subsection ("c1", "Failure/Matrix shear limit").
+      const std::string& parameter = problem.parameters.front();
+      const std::string path =
+        parameter == "Model"
+          ? section + "/Model"
+          : section + "/" + model_subsection(material.parameters.model) + "/" + parameter;
+      check.require(false, path, problem.problem,
+                    problem.remedy.empty() ? "see `vulnus --print-parameters`" : problem.remedy);
     }
   }
 }

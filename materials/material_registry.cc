@@ -60,29 +60,29 @@ std::string model_documentation(const std::string& name)
   return it->second.documentation;
 }
 
-std::vector<std::string> check_parameters(const MaterialParameters& parameters)
+std::vector<ParameterProblem> check_parameters(const MaterialParameters& parameters)
 {
-  std::vector<std::string> messages;
+  std::vector<ParameterProblem> problems;
   const auto it = registry().find(parameters.model);
   if (it == registry().end())
   {
-    messages.push_back("Model: unknown material model '" + parameters.model + "'; choose one of " +
-                       joined_names());
-    return messages;
+    problems.push_back({{"Model"}, "unknown material model '" + parameters.model + "'",
+                        "choose one of " + joined_names()});
+    return problems;
   }
   if (it->second.check)
-    it->second.check(parameters, messages);
-  return messages;
+    it->second.check(parameters, problems);
+  return problems;
 }
 
 std::unique_ptr<Material> create_material(const MaterialParameters& parameters)
 {
-  const std::vector<std::string> messages = check_parameters(parameters);
-  if (!messages.empty())
+  const std::vector<ParameterProblem> problems = check_parameters(parameters);
+  if (!problems.empty())
   {
     std::string joined;
-    for (const std::string& message : messages)
-      joined += (joined.empty() ? "" : "\n") + message;
+    for (const ParameterProblem& problem : problems)
+      joined += (joined.empty() ? "" : "\n") + problem.parameters.front() + ": " + describe(problem);
     throw std::invalid_argument(joined);
   }
   return registry().at(parameters.model).factory(parameters);

@@ -162,7 +162,7 @@ Tangent NeoHookeanPlastic::tangent(const Tensor2& F, const Vector3&, const Point
 
 namespace
 {
-void check_elastic_plastic(const MaterialParameters& parameters, std::vector<std::string>& messages)
+void check_elastic_plastic(const MaterialParameters& parameters, std::vector<ParameterProblem>& problems)
 {
   const ElasticPlasticParameters& p = parameters.elastic_plastic;
   auto require = [&](const bool ok, const std::string& entry, const double value,
@@ -170,9 +170,9 @@ void check_elastic_plastic(const MaterialParameters& parameters, std::vector<std
   {
     if (!ok)
     {
-      std::ostringstream message;
-      message << entry << ": " << problem << " (got " << value << "); " << remedy;
-      messages.push_back(message.str());
+      std::ostringstream got;
+      got << problem << " (got " << value << ")";
+      problems.push_back({{entry}, got.str(), remedy});
     }
   };
   auto finite = [](const double x) { return std::isfinite(x); };

@@ -269,7 +269,7 @@ TissueHyperelastic<false>::first_piola_stress(const Matrix3<double>&, const Vect
 namespace
 {
 void check_tissue(const MaterialParameters& parameters, const bool with_fibers,
-                  std::vector<std::string>& messages)
+                  std::vector<ParameterProblem>& problems)
 {
   const TissueParameters& t = parameters.tissue;
   auto require = [&](const bool ok, const std::string& entry, const double value,
@@ -277,9 +277,9 @@ void check_tissue(const MaterialParameters& parameters, const bool with_fibers,
   {
     if (!ok)
     {
-      std::ostringstream message;
-      message << entry << ": " << problem << " (got " << value << "); " << remedy;
-      messages.push_back(message.str());
+      std::ostringstream got;
+      got << problem << " (got " << value << ")";
+      problems.push_back({{entry}, got.str(), remedy});
     }
   };
   auto finite = [](const double x) { return std::isfinite(x); };
@@ -304,11 +304,11 @@ void check_tissue(const MaterialParameters& parameters, const bool with_fibers,
   if (t.failure.enabled)
   {
     require(finite(t.failure.matrix_shear_limit) && t.failure.matrix_shear_limit > 0.0,
-            "Matrix shear limit", t.failure.matrix_shear_limit, "must be positive",
+            "Failure/Matrix shear limit", t.failure.matrix_shear_limit, "must be positive",
             "give the critical shear strain, e.g. 0.5, or disable failure");
     if (with_fibers)
       require(finite(t.failure.fiber_stretch_limit) && t.failure.fiber_stretch_limit > 1.0,
-              "Fiber stretch limit", t.failure.fiber_stretch_limit, "must be greater than 1",
+              "Failure/Fiber stretch limit", t.failure.fiber_stretch_limit, "must be greater than 1",
               "give the critical total fiber stretch, e.g. 1.4, or disable failure");
   }
 }
@@ -334,8 +334,8 @@ const bool transversely_isotropic_registered = register_material_model(
         return std::make_unique<TransverselyIsotropicHyperelastic>(parameters.tissue);
       return std::make_unique<IsotropicHyperelastic>(parameters.tissue);
     },
-    [](const MaterialParameters& parameters, std::vector<std::string>& messages)
-    { check_tissue(parameters, parameters.tissue.with_fibers, messages); });
+    [](const MaterialParameters& parameters, std::vector<ParameterProblem>& problems)
+    { check_tissue(parameters, parameters.tissue.with_fibers, problems); });
 
 const bool isotropic_registered = register_material_model(
     "isotropic hyperelastic",
@@ -344,7 +344,7 @@ const bool isotropic_registered = register_material_model(
         common_documentation,
     [](const MaterialParameters& parameters) -> std::unique_ptr<Material>
     { return std::make_unique<IsotropicHyperelastic>(parameters.tissue); },
-    [](const MaterialParameters& parameters, std::vector<std::string>& messages)
-    { check_tissue(parameters, false, messages); });
+    [](const MaterialParameters& parameters, std::vector<ParameterProblem>& problems)
+    { check_tissue(parameters, false, problems); });
 } // namespace
 } // namespace vulnus::materials

@@ -16,6 +16,15 @@ namespace vulnus::materials
 {
 namespace
 {
+/// The problems as the deck shows them: "<parameter>: <problem>; <remedy>".
+std::vector<std::string> messages_of(const vulnus::materials::MaterialParameters& parameters)
+{
+  std::vector<std::string> messages;
+  for (const vulnus::ParameterProblem& p : vulnus::materials::check_parameters(parameters))
+    messages.push_back(p.parameters.front() + ": " + vulnus::describe(p));
+  return messages;
+}
+
 bool contains(const std::vector<std::string>& messages, const std::string& text)
 {
   return std::any_of(messages.begin(), messages.end(),
@@ -60,7 +69,7 @@ TEST(MaterialRegistry, BadTissueParametersAreRejectedWithMessages)
   parameters.tissue.bulk_modulus = 0.0;
   parameters.tissue.failure.matrix_shear_limit = -0.5;
   parameters.tissue.failure.fiber_stretch_limit = 1.0;
-  const std::vector<std::string> messages = check_parameters(parameters);
+  const std::vector<std::string> messages = messages_of(parameters);
   EXPECT_EQ(messages.size(), 6u);
   for (const char* entry : {"c1: ", "c4: ", "Lambda star: ", "Bulk modulus: ",
                             "Matrix shear limit: ", "Fiber stretch limit: "})
@@ -93,7 +102,7 @@ TEST(MaterialRegistry, BadElasticPlasticParametersAndUnknownModel)
   parameters.elastic_plastic.yield_stress = 0.0;
   parameters.elastic_plastic.hardening_modulus = -1.0;
   parameters.elastic_plastic.shear_modulus = std::nan("");
-  const std::vector<std::string> messages = check_parameters(parameters);
+  const std::vector<std::string> messages = messages_of(parameters);
   EXPECT_EQ(messages.size(), 3u);
   EXPECT_TRUE(contains(messages, "Yield stress: must be positive"));
   EXPECT_TRUE(contains(messages, "Hardening modulus: "));
@@ -101,7 +110,7 @@ TEST(MaterialRegistry, BadElasticPlasticParametersAndUnknownModel)
   EXPECT_THROW(create_material(parameters), std::invalid_argument);
 
   parameters.model = "steel";
-  const std::vector<std::string> unknown = check_parameters(parameters);
+  const std::vector<std::string> unknown = messages_of(parameters);
   ASSERT_EQ(unknown.size(), 1u);
   EXPECT_NE(unknown[0].find("Model: unknown material model 'steel'; choose one of"),
             std::string::npos);
