@@ -5,8 +5,6 @@
 #include "fem/far_field_data.h"
 #include "mpm/binary_io.h"
 
-
-
 namespace vulnus::fem
 {
 using namespace dealii;
@@ -15,6 +13,20 @@ namespace binary = mpm::binary;
 namespace
 {
 constexpr char tag[8] = {'V', 'U', 'L', 'F', 'E', 'C', 'K', '1'};
+
+/// The running scalars, in checkpoint order, for save (put) and restore (get) alike.
+template <class Data, class Visit>
+void visit_scalars(Data& d, Visit visit)
+{
+  visit(d.last_sums);
+  visit(d.time);
+  visit(d.step);
+  visit(d.external_work);
+  visit(d.last_power);
+  visit(d.dissipated_energy);
+  visit(d.n_failed_points);
+  visit(d.last_warned_failures);
+}
 
 void put_tensors(std::ostream& out, const std::vector<Tensor<1, 3>>& tensors)
 {
@@ -65,14 +77,7 @@ void FarFieldSolver::save(std::ostream& out) const
   put_tensors(out, d.interface_impulse_last_step);
   put_tensors(out, std::vector<Tensor<1, 3>>(d.boundary_now.supports.begin(), d.boundary_now.supports.end()));
   put_tensors(out, std::vector<Tensor<1, 3>>(d.support_impulse.begin(), d.support_impulse.end()));
-  binary::put(out, d.last_sums);
-  binary::put(out, d.time);
-  binary::put(out, d.step);
-  binary::put(out, d.external_work);
-  binary::put(out, d.last_power);
-  binary::put(out, d.dissipated_energy);
-  binary::put(out, d.n_failed_points);
-  binary::put(out, d.last_warned_failures);
+  visit_scalars(d, [&out](const auto& value) { binary::put(out, value); });
   out.write(tag, sizeof(tag));
   if (!out)
     throw std::runtime_error("FE checkpoint could not be written");
@@ -127,14 +132,7 @@ void FarFieldSolver::restore(std::istream& in)
   std::copy(faces.begin(), faces.end(), d.boundary_now.supports.begin());
   get_tensors(in, faces, n_slab_faces + 1);
   std::copy(faces.begin(), faces.end(), d.support_impulse.begin());
-  binary::get(in, d.last_sums);
-  binary::get(in, d.time);
-  binary::get(in, d.step);
-  binary::get(in, d.external_work);
-  binary::get(in, d.last_power);
-  binary::get(in, d.dissipated_energy);
-  binary::get(in, d.n_failed_points);
-  binary::get(in, d.last_warned_failures);
+  visit_scalars(d, [&in](auto& value) { binary::get(in, value); });
   binary::expect_tag(in, tag, "FE checkpoint is incomplete (no trailer)");
 }
 } // namespace vulnus::fem

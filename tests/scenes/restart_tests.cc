@@ -193,17 +193,28 @@ TEST_F(Restart, AForgottenSetEntryIsNamed)
   EXPECT_EQ(r.err.find("skipped"), std::string::npos) << r.err;
 }
 
+// A run to its end in `reference`, the same run killed after its first checkpoint in
+// `killed` and restarted there: the restart's result (a failure of the first two steps is
+// reported as a failed restart, exit status -1).
+template <class Arguments>
+CommandResult reference_then_killed_and_restarted(const fs::path& directory, Arguments arguments)
+{
+  const CommandResult reference = run_vulnus("run " + arguments("--output reference"), directory);
+  EXPECT_EQ(reference.exit_status, 0) << reference.err;
+  int status = 0, signal = 0;
+  interrupt_after_first_checkpoint(directory, "killed", SIGKILL, status, signal, arguments);
+  EXPECT_EQ(signal, SIGKILL) << "the run ended before it could be killed";
+  if (reference.exit_status != 0 || signal != SIGKILL)
+    return CommandResult{};
+  return run_vulnus("run " + arguments("--restart killed"), directory);
+}
+
 // A hybrid run killed mid-way continues bit for bit: the MPM zone, the far field (vectors,
 // quadrature-point histories, mesh output records) and the coupling's window state.
 TEST(HybridRestart, KilledRunContinuesBitForBit)
 {
   ScratchDirectory scratch("hybrid_restart");
-  const CommandResult reference = run_vulnus("run " + hybrid_arguments("--output reference"), scratch.path);
-  ASSERT_EQ(reference.exit_status, 0) << reference.err;
-  int status = 0, signal = 0;
-  interrupt_after_first_checkpoint(scratch.path, "killed", SIGKILL, status, signal, hybrid_arguments);
-  ASSERT_EQ(signal, SIGKILL) << "the run ended before it could be killed";
-  const CommandResult r = run_vulnus("run " + hybrid_arguments("--restart killed"), scratch.path);
+  const CommandResult r = reference_then_killed_and_restarted(scratch.path, hybrid_arguments);
   ASSERT_EQ(r.exit_status, 0) << r.err;
   EXPECT_NE(r.out.find("restarted from"), std::string::npos);
   expect_identical_runs(scratch.path / "reference", scratch.path / "killed");
@@ -221,12 +232,7 @@ std::string fe_arguments(const std::string& extra = "")
 TEST(FeRestart, KilledRunContinuesBitForBit)
 {
   ScratchDirectory scratch("fe_restart");
-  const CommandResult reference = run_vulnus("run " + fe_arguments("--output reference"), scratch.path);
-  ASSERT_EQ(reference.exit_status, 0) << reference.err;
-  int status = 0, signal = 0;
-  interrupt_after_first_checkpoint(scratch.path, "killed", SIGKILL, status, signal, fe_arguments);
-  ASSERT_EQ(signal, SIGKILL) << "the run ended before it could be killed";
-  const CommandResult r = run_vulnus("run " + fe_arguments("--restart killed"), scratch.path);
+  const CommandResult r = reference_then_killed_and_restarted(scratch.path, fe_arguments);
   ASSERT_EQ(r.exit_status, 0) << r.err;
   EXPECT_EQ(summary_without_timing(scratch.path / "reference"),
             summary_without_timing(scratch.path / "killed"));
