@@ -28,13 +28,6 @@ std::string number(const double value)
   return out.str();
 }
 
-std::string trim(const std::string& s)
-{
-  const std::size_t begin = s.find_first_not_of(' ');
-  return begin == std::string::npos ? std::string()
-                                    : s.substr(begin, s.find_last_not_of(' ') - begin + 1);
-}
-
 std::string point(const Vector3& p)
 {
   return number(p[0]) + ", " + number(p[1]) + ", " + number(p[2]);

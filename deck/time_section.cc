@@ -14,6 +14,14 @@ void declare_time_section(EntryTable& table)
                 "excluded from the maximum. At 0.2 halving the step moves every wound figure "
                 "of the paper scenes (rigid bullet) by at most 3 %; at 0.4 by up to 10 % "
                 "(docs/converged_wound.md).");
+  table.declare("Subcycle projectile", "true", Patterns::Bool(),
+                "A deformable projectile advances in substeps of its own CFL step inside the "
+                "scene's step, which then follows the target's wave speed. Contact is resolved "
+                "once per scene step with the projectile leading (the target's nodes take its "
+                "velocity, as a rigid body's; it takes their momentum as a load spread over its "
+                "substeps): the wound then converges in the step and matches the rigid "
+                "projectile's (docs/converged_wound.md section 13). false: the whole scene "
+                "steps at the projectile's wave speed and contact treats it like the target.");
   table.declare("Artificial viscosity linear", "0.06", Patterns::Double(0.0),
                 "Linear bulk viscosity coefficient q1 [-] of the shock viscosity q = rho (q1 c h "
                 "|tr D| + q2 h^2 (tr D)^2), acting in compression only (0: off). The default, "
@@ -45,6 +53,7 @@ void parse_time_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   prm.enter_subsection("Time");
   scene.end_time = prm.get_double("End time");
   scene.cfl = prm.get_double("CFL");
+  scene.subcycle_projectile = prm.get_bool("Subcycle projectile");
   scene.artificial_viscosity_linear = prm.get_double("Artificial viscosity linear");
   scene.artificial_viscosity_quadratic = prm.get_double("Artificial viscosity quadratic");
   scene.max_time_step = prm.get_double("Maximum time step");

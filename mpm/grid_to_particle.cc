@@ -75,6 +75,8 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
         {
           const double flip =
             s.body_flip_fraction.empty() ? s.flip_fraction : s.body_flip_fraction[b];
+          if (s.skips(b))
+            return;
           if (s.body_is_rigid[b])
             for (long p = range.begin; p < range.end; ++p)
               particles.velocity[p] = s.rigid_velocity[b];
@@ -115,6 +117,8 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                for (std::size_t b = 0; b < n_bodies; ++b)
                {
                  const long begin = particles.begin_of(b), end = particles.end_of(b);
+                 if (s.skips(b))
+                   continue;
                  if (s.body_is_rigid[b])
                  {
                    const Vector3 step = dt * s.rigid_velocity[b];

@@ -26,6 +26,13 @@ struct KinematicsSettings
   DeformationUpdate deformation_update = DeformationUpdate::midpoint;
   std::vector<char> body_is_rigid;
   std::vector<Vector3> rigid_velocity;
+  /// Per body, 1 when another stepper advances its points (a subcycled projectile): they are
+  /// left as they are here. Empty: none.
+  std::vector<char> body_advanced_elsewhere;
+  bool skips(const std::size_t b) const
+  {
+    return !body_advanced_elsewhere.empty() && body_advanced_elsewhere[b];
+  }
 };
 
 /// Updates point velocities from fields.velocity (v^n) and fields.velocity_new (v^(n+1)):

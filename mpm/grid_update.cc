@@ -71,7 +71,8 @@ double gap_after_step(const NodeBodyData& first, const NodeBodyData& second,
 double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Vector3* v,
                        const std::size_t n_bodies, Vector3* contact_force_local)
 {
-  // Centre-of-mass velocity, or the rigid body's velocity when one is present.
+  // Centre-of-mass velocity, or the velocity of the rigid body, else of the contact leader,
+  // when one is present (both are called rigid below: the others follow them).
   double total_mass = 0.0;
   Vector3 total_momentum = Vector3::Zero();
   int rigid = -1;
@@ -84,7 +85,15 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Ve
     total_mass += data[b].mass;
     total_momentum += data[b].mass * v[b];
   }
-  const Vector3 v_cm = rigid >= 0 ? s.rigid_velocity[rigid] : Vector3(total_momentum / total_mass);
+  const int leader_here = s.subcycled_body >= 0 && data[s.subcycled_body].mass > s.mass_tolerance
+                            ? s.subcycled_body
+                            : -1;
+  if (rigid < 0)
+    rigid = leader_here;
+  const bool leader = rigid >= 0 && rigid == s.subcycled_body;
+  const Vector3 v_cm = rigid < 0 ? Vector3(total_momentum / total_mass)
+                       : leader  ? v[rigid]
+                                 : s.rigid_velocity[rigid];
 
   // Outward unit normals: for two bodies one shared direction from the mass gradients.
   std::size_t present[2] = {0, 0};
@@ -129,6 +138,7 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Ve
   }
 
   double dissipated = 0.0;
+  Vector3 reaction = Vector3::Zero(); // momentum the followers gained
   for (std::size_t b = 0; b < n_bodies; ++b)
   {
     const double m = data[b].mass;
@@ -161,13 +171,28 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Ve
     }
     v[b] = before + engagement * (v[b] - before);
     const Vector3 force = m * (v[b] - before) / dt;
+    reaction += m * (v[b] - before);
     contact_force_local[b] += force;
     if (rigid >= 0)
       contact_force_local[rigid] -= force;
     // Kinetic energy lost relative to the centre of mass (equals the total loss because the
     // corrections conserve momentum, and counts work done on a rigid body as a transfer).
-    dissipated += 0.5 * m * ((before - v_cm).squaredNorm() - (v[b] - v_cm).squaredNorm());
+    if (static_cast<int>(b) == s.subcycled_body)
+      dissipated += v_cm.dot(m * (v[b] - before)); // see below
+    else
+      dissipated += 0.5 * m * ((before - v_cm).squaredNorm() - (v[b] - v_cm).squaredNorm());
   }
+  if (leader)
+  {
+    // The leader's node takes the reaction, which its substeps spread over its points (see
+    // mpm/projectile_subcycle.h).
+    const Vector3 change = -reaction / data[rigid].mass;
+    v[rigid] += change;
+    dissipated += v_cm.dot(data[rigid].mass * change);
+  }
+  // The subcycled body's velocity changes over its substeps, not here: its term is the
+  // transfer v_cm . dp, so that the sum is the others' loss in the lab frame; the substeps
+  // subtract the work the contact force does on it.
   return dissipated;
 }
 /// Whether two rigid bodies reaching one node touch there: their mass centres seen from the
@@ -224,7 +249,12 @@ void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fiel
         continue;
       }
       v[b] = data[b].momentum / data[b].mass;
-      v_new[b] = v[b] + dt * (data[b].force / data[b].mass + s.gravity);
+      // The contact leader's internal forces act in its own substeps: at the scene's step they
+      // would be unstable, and contact needs its velocity only.
+      const bool leader = static_cast<int>(b) == s.subcycled_body;
+      const Vector3 acceleration =
+        leader ? s.gravity : Vector3(data[b].force / data[b].mass + s.gravity);
+      v_new[b] = v[b] + dt * acceleration;
     }
     if (s.contact && n_with_mass > 1)
       continue; // resolve_contacts applies the face conditions after the correction

@@ -24,6 +24,13 @@ struct GridUpdateSettings
   std::vector<char> body_is_rigid;     ///< per body
   std::vector<Vector3> rigid_velocity; ///< per body, used when rigid
   double mass_tolerance = 0.0;         ///< node-body entries lighter than this are ignored
+  /// A deformable body far stiffer than the others, advanced in substeps of its own (a
+  /// subcycled projectile), or -1. Where it meets them and no rigid body is present it leads:
+  /// their velocities are corrected towards its nodal velocity as towards a rigid body's, and
+  /// its own nodal velocity takes the reaction (the momentum they gained). Its trial velocity
+  /// leaves out its internal forces, and the contact dissipation leaves out its kinetic
+  /// energy change, which its substeps book as work.
+  int subcycled_body = -1;
   /// Proximity check of contact (m; 0: off): two bodies at a node interact only when the
   /// distance along the normal between their mass centres there, after this step's approach,
   /// is at most this. Without it contact acts wherever both bodies have mass, up to a cell

@@ -34,6 +34,35 @@ void Particles::append(const Vector3& x, const Vector3& v, const double m, const
   wave_speed.push_back(0.0);
 }
 
+Particles Particles::copy_of_range(const std::size_t begin, const std::size_t end) const
+{
+  Particles part;
+  part.for_each_array_with(*this, [&](auto& mine, const auto& theirs)
+                           { mine.assign(theirs.begin() + begin, theirs.begin() + end); });
+  part.body_begin = {0, end - begin};
+  for (materials::PlasticSlot& slot : part.plastic_slot)
+    if (slot.index != materials::PlasticSlot::none)
+    {
+      part.plastic_pool.push_back(plastic_pool[slot.index]);
+      slot.index = static_cast<std::uint32_t>(part.plastic_pool.size() - 1);
+    }
+  return part;
+}
+
+void Particles::write_back_body(const std::size_t b, const Particles& part)
+{
+  const std::size_t begin = begin_of(b);
+  for (std::size_t i = 0; i < part.size(); ++i)
+    if (const materials::PlasticHistory* history = part.plastic_of(i))
+      plastic_pool[plastic_slot[begin + i].index] = *history;
+  // The slots keep pointing into this container's pool.
+  const std::vector<materials::PlasticSlot> slots(plastic_slot.begin() + begin,
+                                                  plastic_slot.begin() + begin + part.size());
+  for_each_array_with(part, [&](auto& mine, const auto& theirs)
+                      { std::copy(theirs.begin(), theirs.end(), mine.begin() + begin); });
+  std::copy(slots.begin(), slots.end(), plastic_slot.begin() + begin);
+}
+
 namespace
 {
 /// values[i] = old values[order[i]] by following the permutation's cycles: one element of

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <tuple>
 #include <cstdint>
 #include <vector>
 
@@ -105,6 +106,14 @@ struct Particles
   /// Closes the last body (records its end).
   void finish_body() { body_begin.back() = size(); }
 
+  /// Points [begin, end) as a one-body container (with their plastic histories).
+  Particles copy_of_range(std::size_t begin, std::size_t end) const;
+  /// The points of body b alone, as a one-body container.
+  Particles copy_of_body(std::size_t b) const { return copy_of_range(begin_of(b), end_of(b)); }
+  /// Writes `part` (a copy_of_body(b) advanced since, same points in the same order) back
+  /// into body b.
+  void write_back_body(std::size_t b, const Particles& part);
+
   /// Removes the points whose keep flag is 0, preserving order and body ranges (and compacts
   /// the plastic pool).
   void keep_only(const std::vector<char>& keep);
@@ -119,26 +128,30 @@ struct Particles
   template <class F>
   void for_each_array(F&& f)
   {
-    f(position);
-    f(reference_position);
-    f(velocity);
-    f(affine_velocity);
-    f(deformation_gradient);
-    f(stress);
-    f(mass);
-    f(reference_volume);
-    f(fiber_direction);
-    f(failure);
-    f(plastic_slot);
-    f(energy_density);
-    f(dissipated_density);
-    f(wave_speed);
-    f(id);
+    std::apply([&](auto... member) { (f(this->*member), ...); }, arrays());
   }
   template <class F>
   void for_each_array(F&& f) const
   {
-    const_cast<Particles&>(*this).for_each_array([&f](const auto& values) { f(values); });
+    std::apply([&](auto... member) { (f(this->*member), ...); }, arrays());
+  }
+  /// Calls f(mine, theirs) on each per-point array and the same array of `other`.
+  template <class F>
+  void for_each_array_with(const Particles& other, F&& f)
+  {
+    std::apply([&](auto... member) { (f(this->*member, other.*member), ...); }, arrays());
+  }
+
+private:
+  static constexpr auto arrays()
+  {
+    return std::make_tuple(&Particles::position, &Particles::reference_position,
+                           &Particles::velocity, &Particles::affine_velocity,
+                           &Particles::deformation_gradient, &Particles::stress, &Particles::mass,
+                           &Particles::reference_volume, &Particles::fiber_direction,
+                           &Particles::failure, &Particles::plastic_slot,
+                           &Particles::energy_density, &Particles::dissipated_density,
+                           &Particles::wave_speed, &Particles::id);
   }
 };
 } // namespace vulnus::mpm

@@ -140,6 +140,10 @@ struct SceneParameters
   /// stiff projectile rings at its own grid-scale frequency after each contact impulse; FLIP
   /// never damps that ringing, which then yields the metal numerically.
   double projectile_velocity_relaxation = 0.0;
+  /// A deformable projectile advances in substeps of its own CFL step inside the scene's
+  /// step, which then follows the other bodies' wave speeds (contact is resolved once per
+  /// scene step, with the projectile as the contact leader: see mpm/projectile_subcycle.h).
+  bool subcycle_projectile = true;
   DeformationUpdate deformation_update = DeformationUpdate::midpoint;
   double end_time = 1.0e-3;           ///< s
   double artificial_viscosity_linear = 0.0;    ///< bulk viscosity coefficients (0 = off)

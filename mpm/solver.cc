@@ -3,6 +3,7 @@
 
 #include "materials/material_registry.h"
 #include "mpm/body_builder.h"
+#include "mpm/point_transfer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -112,6 +113,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   // F = I, so this gives the small-strain moduli for the first CFL step).
   stress_settings.time_step = 0.0;
   update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
+  plan_projectile_subcycle();
   sort_points();
   const SceneDiagnostics d = diagnostics();
   energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
@@ -127,6 +129,83 @@ void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& 
         particles.velocity[p] = field(particles.position[p]);
   const SceneDiagnostics d = diagnostics();
   energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
+}
+
+void Solver::plan_projectile_subcycle()
+{
+  const int b = projectile_body;
+  if (!parameters.subcycle_projectile || b < 0 || grid_settings.body_is_rigid[b] ||
+      particles.n_bodies() < 2)
+    return;
+  SubcycleStages stages;
+  stages.transfer = transfer;
+  stages.transfer.half_size_cells = {transfer.half_size_cells[b]};
+  stages.transfer.contact_normals = false;
+  stages.grid_update = grid_settings;
+  stages.grid_update.contact = false;
+  stages.grid_update.body_is_rigid = {0};
+  stages.grid_update.rigid_velocity = {Vector3::Zero()};
+  stages.kinematics = kinematics;
+  stages.kinematics.body_is_rigid = {0};
+  stages.kinematics.rigid_velocity = {Vector3::Zero()};
+  stages.stress = stress_settings;
+  stages.stress.body_material = {materials_of_body[b]};
+  stages.stress.body_density = {parameters.bodies[b].density};
+  stages.musl = parameters.update_scheme == UpdateScheme::musl;
+  subcycle = std::make_unique<ProjectileSubcycle>(grid, stages);
+  grid_settings.subcycled_body = b;
+  kinematics.body_advanced_elsewhere.assign(particles.n_bodies(), 0);
+  kinematics.body_advanced_elsewhere[b] = 1;
+  stress_settings.body_advanced_elsewhere = kinematics.body_advanced_elsewhere;
+}
+
+void Solver::advance_projectile_substeps(const double dt)
+{
+  const int b = projectile_body;
+  const double flip = kinematics.body_flip_fraction.empty() ? kinematics.flip_fraction
+                                                            : kinematics.body_flip_fraction[b];
+  Particles projectile = particles.copy_of_body(b);
+  std::vector<Vector3> force = projectile_contact_force;
+  std::size_t first_of_mine = 0;
+  if (ranks.distributed())
+  {
+    // Every rank takes every rank's share, in rank order, with its forces.
+    const std::vector<std::vector<char>> point_messages =
+      ranks.exchange_with_all(std::vector<std::vector<char>>(ranks.size(), to_bytes(projectile)));
+    const char* force_bytes = reinterpret_cast<const char*>(force.data());
+    const std::vector<std::vector<char>> force_messages = ranks.exchange_with_all(
+      std::vector<std::vector<char>>(ranks.size(), std::vector<char>(force_bytes, force_bytes + force.size() * sizeof(Vector3))));
+    std::vector<Particles> parts;
+    force.clear();
+    for (int r = 0; r < ranks.size(); ++r)
+    {
+      parts.push_back(from_bytes(point_messages[r].data(), point_messages[r].size()));
+      if (r < ranks.rank())
+        first_of_mine += parts.back().size();
+      const Vector3* f = reinterpret_cast<const Vector3*>(force_messages[r].data());
+      force.insert(force.end(), f, f + force_messages[r].size() / sizeof(Vector3));
+    }
+    Particles none;
+    none.body_begin.assign(2, 0);
+    projectile = merge_points(none, {}, parts);
+  }
+  const std::size_t n_mine = particles.end_of(b) - particles.begin_of(b);
+  const SubcycleResult result =
+    subcycle->advance(projectile, force, dt, n_projectile_substeps, flip);
+  particles.write_back_body(
+    b, ranks.distributed() ? projectile.copy_of_range(first_of_mine, first_of_mine + n_mine)
+                           : projectile);
+  peak_yield_ratio[b] = std::max(peak_yield_ratio[b], result.max_von_mises_over_yield);
+  if (ranks.rank() == 0) // every rank advanced the same points; impulses are summed later
+    for (int f = 0; f < 6; ++f)
+      support_impulse_here[f] += result.support_impulse[f];
+  accumulated_contact_dissipation -= result.contact_work; // a total on every rank
+  const long failed = result.failed_point - static_cast<long>(first_of_mine);
+  if (failed >= 0 && failed < static_cast<long>(n_mine) && stress_result.failed_point < 0)
+  {
+    stress_result.failed_point = static_cast<long>(particles.begin_of(b)) + failed;
+    stress_result.failure_message = result.failure_message;
+  }
 }
 
 void Solver::relax_projectile_velocities(const double dt, const std::vector<double>& signal_speed)
@@ -176,7 +255,9 @@ double Solver::step_limit(std::vector<double>* fastest_point_of_body,
       body_fastest = std::max(body_fastest, particles.wave_speed[p] + speed);
       body_speed = std::max(body_speed, speed);
     }
-    fastest = std::max(fastest, body_fastest);
+    // A subcycled projectile limits the scene's step only by crossing cells.
+    fastest = std::max(fastest, subcycle && static_cast<int>(b) == projectile_body ? body_speed
+                                                                                 : body_fastest);
     if (fastest_point_of_body)
       (*fastest_point_of_body)[b] = body_speed;
     if (signal_speed_of_body)
@@ -227,6 +308,11 @@ void Solver::advance(const double cap)
     kinematics.flip_fraction = std::exp(-dt / (parameters.velocity_relaxation * courant_time));
   }
   relax_projectile_velocities(dt, signal_speed);
+  if (subcycle)
+  {
+    const double own_step = parameters.cfl * parameters.cell_size / signal_speed[projectile_body];
+    n_projectile_substeps = std::max(1, static_cast<int>(std::ceil(dt / own_step * (1.0 - 1e-12))));
+  }
   lap(timings.time_step);
 
   mark_active_nodes(particles, transfer, grid);
@@ -238,6 +324,13 @@ void Solver::advance(const double cap)
   grid_settings.time_step = dt;
   update_grid(grid, grid_settings, fields, grid_result);
   lap(timings.grid_update);
+  if (subcycle)
+  {
+    const std::size_t n_bodies = fields.n_bodies;
+    projectile_trial_velocity.resize(grid.n_active());
+    for (std::size_t node = 0; node < grid.n_active(); ++node)
+      projectile_trial_velocity[node] = fields.velocity_new[node * n_bodies + projectile_body];
+  }
   resolve_contacts(grid, grid_settings, fields, grid_result);
   if (const std::string problem = ranks.first_message(rigid_meeting_problem(dt)); !problem.empty())
     throw BlowUp(problem);
@@ -245,6 +338,10 @@ void Solver::advance(const double cap)
   accumulated_contact_dissipation += grid_result.contact_dissipation;
   for (int f = 0; f < 6; ++f)
     support_impulse_here[f] += grid_result.support_impulse[f];
+  if (subcycle)
+    projectile_contact_force = contact_force_on_points(grid, transfer, fields,
+                                                       projectile_trial_velocity, particles,
+                                                       projectile_body, dt);
   lap(timings.contact);
   if (shared.partner)
   {
@@ -269,6 +366,8 @@ void Solver::advance(const double cap)
 
   stress_settings.time_step = dt;
   update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
+  if (subcycle)
+    advance_projectile_substeps(dt);
   std::vector<double> yield_ratio = stress_result.max_von_mises_over_yield;
   ranks.max(yield_ratio.data(), static_cast<int>(yield_ratio.size()));
   for (std::size_t b = 0; b < peak_yield_ratio.size(); ++b)

@@ -14,6 +14,7 @@
 #include "mpm/interface_exchange.h"
 #include "mpm/particle_to_grid.h"
 #include "mpm/particles.h"
+#include "mpm/projectile_subcycle.h"
 #include "mpm/rank_group.h"
 #include "mpm/scene_parameters.h"
 #include "mpm/slab_partition.h"
@@ -171,6 +172,10 @@ public:
   /// Active nodes of the last step (kept across a checkpoint, like the contact results).
   std::size_t active_nodes() const { return n_active_last_step; }
   bool uses_contact() const { return contact_active; }
+  /// Whether the projectile advances in substeps of its own (Time/Subcycle projectile), and
+  /// how many it took in the last step (0: not subcycled).
+  bool subcycles_projectile() const { return subcycle != nullptr; }
+  int last_projectile_substeps() const { return n_projectile_substeps; }
   const PhaseTimes& phase_times() const { return timings; }
 
 private:
@@ -178,6 +183,11 @@ private:
   /// The CFL step; per body (when asked) the fastest point speed |v| and signal speed c + |v|.
   /// Sets the projectile's FLIP fraction for this step (scene.projectile_velocity_relaxation).
   void relax_projectile_velocities(double dt, const std::vector<double>& signal_speed);
+  /// Builds the projectile's subcycle when the scene asks for one and it applies.
+  void plan_projectile_subcycle();
+  /// The projectile's substeps over this step dt (after the other bodies' step). Distributed,
+  /// every rank advances the whole projectile (gathered from all) and keeps its own points.
+  void advance_projectile_substeps(double dt);
   double step_limit(std::vector<double>* fastest_point_of_body,
                     std::vector<double>* signal_speed_of_body = nullptr) const;
   void sort_points();
@@ -240,6 +250,10 @@ private:
   SharedNodes shared;
   SharedNodeState shared_state;
   std::vector<Vector3> shared_velocity_start, shared_velocity_end;
+  std::unique_ptr<ProjectileSubcycle> subcycle;
+  std::vector<Vector3> projectile_trial_velocity; ///< per active node, before contact
+  std::vector<Vector3> projectile_contact_force;  ///< per projectile point of this rank
+  int n_projectile_substeps = 0;
   bool contact_active = false;
   int projectile_body = -1;
   Vector3 flight_axis = Vector3::UnitY();

@@ -71,7 +71,7 @@ void update_stresses(const StressUpdateSettings& s, const double* volumetric_rat
   for (std::size_t b = 0; b < n_bodies; ++b)
   {
     const materials::Material& material = *s.body_material[b];
-    if (material.is_rigid())
+    if (material.is_rigid() || (!s.body_advanced_elsewhere.empty() && s.body_advanced_elsewhere[b]))
       continue;
     const long begin = particles.begin_of(b), end = particles.end_of(b);
     const long n_blocks = (end - begin + block_size - 1) / block_size;

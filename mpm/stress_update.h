@@ -20,6 +20,8 @@ struct StressUpdateSettings
   bool uses_viscosity() const { return viscosity_linear > 0.0 || viscosity_quadratic > 0.0; }
   std::vector<const materials::Material*> body_material;
   std::vector<double> body_density; ///< reference density per body, kg/m^3
+  /// Per body, 1 when another stepper updates its points (a subcycled projectile). Empty: none.
+  std::vector<char> body_advanced_elsewhere;
 };
 
 struct StressUpdateResult

@@ -3,7 +3,9 @@
 // sound run says nothing. The broken scene is one of issue 25's: an elastic-plastic bullet
 // into a prescribed rigid slab. It gained 32 % of its energy when the issue was filed; with
 // the shock viscosity and the projectile's relaxation it gains 7.7 % by 120 microseconds
-// (5 % at step 140) at CFL 0.4, so the tests run at that step and set bounds below that.
+// (5 % at step 140) at CFL 0.4 when the bullet steps with the scene, so the tests run at that
+// step without subcycling and set bounds below that. (Subcycled, the same scene closes its
+// balance to 1e-4: the contact's work on the bullet is booked over its substeps.)
 #include "../app/command_runner.h"
 
 #include <nlohmann/json.hpp>
@@ -21,7 +23,8 @@ const std::string paper_deck = "run '" + source_dir() + "/inputs/paper/anisotrop
 const std::string bullet_into_wall =
   paper_deck + "--set 'Grid/Cell size=0.002' --set 'Material tissue/Model=rigid' "
                "--set 'Body slab/Rigid motion=prescribed' --set 'Time/End time=1.2e-4' "
-               "--set 'Output/Particle output interval=0' --set 'Time/CFL=0.4' ";
+               "--set 'Output/Particle output interval=0' --set 'Time/CFL=0.4' "
+               "--set 'Time/Subcycle projectile=false' ";
 
 nlohmann::json summary_of(const fs::path& run)
 {

@@ -65,3 +65,23 @@ TEST(SceneWarnings, AProjectileLeavingTheGridInPartIsFlagged)
     << r.err;
   EXPECT_NE(r.err.find("describe only the"), std::string::npos) << r.err;
 }
+
+// An elastic-plastic bullet stepped with the scene gives a wound that drifts with the step:
+// the run says so and names the entry; subcycled (the default) it says nothing about it.
+TEST(SceneWarnings, AnUnsubcycledDeformableProjectileIsFlagged)
+{
+  ScratchDirectory scratch("scene_warning_unsubcycled");
+  const std::string elastic_plastic_run = short_paper_run +
+                                          "--set 'Material bullet/Model=elastic plastic' ";
+  const CommandResult stepped = run_vulnus(
+    elastic_plastic_run + "--set 'Time/Subcycle projectile=false' --output stepped", scratch.path);
+  ASSERT_EQ(stepped.exit_status, 0) << stepped.out << stepped.err;
+  EXPECT_TRUE(mentions(warnings_of(scratch.path / "stepped"),
+                       "not subcycled (Time/Subcycle projectile = false)"));
+  const CommandResult subcycled = run_vulnus(elastic_plastic_run + "--output subcycled",
+                                             scratch.path);
+  ASSERT_EQ(subcycled.exit_status, 0) << subcycled.out << subcycled.err;
+  EXPECT_FALSE(mentions(warnings_of(scratch.path / "subcycled"), "not subcycled"));
+  EXPECT_NE(read_text(scratch.path / "subcycled" / "log.txt").find("subcycled: substeps"),
+            std::string::npos);
+}
