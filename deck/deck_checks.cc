@@ -175,6 +175,33 @@ void check_materials(const mpm::SceneParameters& scene, Checker& check)
   }
 }
 
+/// The nonlocal failure criterion: a length that spans more than the point itself, on one
+/// rank (its neighbour search holds one rank's points).
+void check_failure_regularization(const mpm::SceneParameters& scene, Checker& check)
+{
+  for (const mpm::NamedMaterial& material : scene.materials)
+  {
+    const materials::FailureParameters& failure = material.parameters.tissue.failure;
+    const bool tissue = material.parameters.model.find("hyperelastic") != std::string::npos;
+    if (!tissue || !failure.enabled || !(failure.regularization_length > 0.0))
+      continue;
+    const std::string entry = "Material " + material.name + "/" +
+                              model_subsection(material.parameters.model) +
+                              "/Failure/Regularization length";
+    check.require(!(scene.cell_size > 0.0) || failure.regularization_length >= 0.5 * scene.cell_size,
+                  entry,
+                  "l = " + number(failure.regularization_length) +
+                    " m is below half the cell size " + number(scene.cell_size) +
+                    " m, so a point's mean would hold hardly more than itself",
+                  "give l of a few cell sizes (the failed zone is then about l wide), or 0 for "
+                  "the local criterion");
+    check.require(io::launcher_size() <= 1, entry,
+                  "the nonlocal criterion runs on one MPI rank only (this run has " +
+                    std::to_string(io::launcher_size()) + ")",
+                  "run on one rank, or set it to 0 for the local criterion");
+  }
+}
+
 void check_bodies(const mpm::SceneParameters& scene, Checker& check)
 {
   std::string material_names;
@@ -410,6 +437,7 @@ std::vector<std::string> check_run_parameters(const RunParameters& parameters,
   check_grid(parameters.scene, check);
   check_time(parameters, check);
   check_materials(parameters.scene, check);
+  check_failure_regularization(parameters.scene, check);
   check_bodies(parameters.scene, check);
   check_body_layout(parameters.scene, check);
   if (parameters.method == Method::mpm && !parameters.hybrid.enabled)

@@ -78,6 +78,13 @@ void declare_tissue(EntryTable& table, const materials::TissueParameters& d, con
                   Patterns::Double(1.0),
                   "Fiber failure limit lambda_crit on the total fiber stretch [-]; > 1 (the "
                   "paper: 1.4, a fiber strain of 40 %).");
+  table.declare("Regularization length", format_number(d.failure.regularization_length),
+                Patterns::Double(0.0),
+                "Nonlocal failure: radius l [m] over which the MPM points average both failure "
+                "measures (bell weights (1 - r^2/l^2)^2 over the reference configuration) "
+                "before comparing them with the limits, so the failed zone is at least about "
+                "l wide whatever the cell size; 0: the paper's local criterion. FE points keep "
+                "the local one. One MPI rank only (docs/mesh_objective_failure.md).");
   table.leave();
 }
 
@@ -105,6 +112,7 @@ void parse_tissue(ParameterHandler& prm, materials::TissueParameters& t, const b
   t.failure.matrix_shear_limit = prm.get_double("Matrix shear limit");
   if (with_fibers)
     t.failure.fiber_stretch_limit = prm.get_double("Fiber stretch limit");
+  t.failure.regularization_length = prm.get_double("Regularization length");
   prm.leave_subsection();
 }
 

@@ -21,13 +21,21 @@ using Vector3 = Eigen::Vector3d;
 /// d P_iJ / d F_kL as a 9x9 matrix, row 3*i+J, column 3*k+L (P the first Piola stress).
 using Tangent = Eigen::Matrix<double, 9, 9>;
 
+struct FailureParameters;
+
 /// Failure flag of a point (paper eqs. 5-6): bit 0 matrix, bit 1 fibers.
 enum FailureFlag : std::uint8_t
 {
   intact = 0,
   matrix_failed = 1,
   fiber_failed = 2,
-  total_failure = 3
+  total_failure = 3,
+  /// Set by a caller that decides failure itself (the nonlocal criterion) just before an
+  /// update, cleared by the update: the law then takes the two bits below as its new
+  /// failures instead of checking its local criterion. Never seen outside that call.
+  failure_decided_outside = 16,
+  matrix_fails_now = 4,
+  fibers_fail_now = 8
 };
 
 /// Plastic history of an elastic-plastic point (56 bytes).
@@ -103,6 +111,8 @@ public:
   virtual bool uses_fibers() const { return false; }
   /// True when the law reads and writes PlasticHistory (else only the failure flags).
   virtual bool has_plastic_history() const { return false; }
+  /// The two-surface failure criterion of the law, or null when it has none.
+  virtual const FailureParameters* failure_criterion() const { return nullptr; }
 
   /// Update one point: F the total deformation gradient, a0 the unit reference fiber
   /// direction (ignored without fibers). Updates the history in state.

@@ -22,6 +22,9 @@ struct FailureParameters
   ShearMeasure shear_measure = ShearMeasure::principal_green_difference;
   double matrix_shear_limit = 0.5;  ///< gamma_crit, > 0
   double fiber_stretch_limit = 1.4; ///< lambda_crit, > 1
+  /// Nonlocal regularization: radius l (m) over which the MPM points average both failure
+  /// measures before comparing them with the limits; 0: the paper's local criterion.
+  double regularization_length = 0.0;
 };
 
 /// Transversely isotropic hyperelastic tissue (Weiss 1996, uncoupled). With

@@ -211,8 +211,8 @@ void TissueHyperelastic<with_fibers>::update_point(const Tensor2& F, const Vecto
   if (!(J > 0.0) || !std::isfinite(J))
     throw_inverted(J);
 
-  const std::uint8_t old_flags = failure;
-  std::uint8_t flags = updated_failure_flags(prm.failure, F, a0, with_fibers, old_flags);
+  const std::uint8_t old_flags = failure & total_failure;
+  std::uint8_t flags = flags_after_update(prm.failure, F, a0, with_fibers, failure);
   if (!with_fibers && (flags & matrix_failed))
     flags |= fiber_failed; // without fibers the failed matrix leaves nothing: total failure
   const std::uint8_t newly_failed = flags & ~old_flags;
@@ -310,6 +310,11 @@ void check_tissue(const MaterialParameters& parameters, const bool with_fibers,
       require(finite(t.failure.fiber_stretch_limit) && t.failure.fiber_stretch_limit > 1.0,
               "Failure/Fiber stretch limit", t.failure.fiber_stretch_limit, "must be greater than 1",
               "give the critical total fiber stretch, e.g. 1.4, or disable failure");
+    require(finite(t.failure.regularization_length) && t.failure.regularization_length >= 0.0 &&
+              t.failure.regularization_length < 1.0,
+            "Failure/Regularization length", t.failure.regularization_length,
+            "must be at least 0 and below 1 m",
+            "give the material length in metres, e.g. 0.002, or 0 for the local criterion");
   }
 }
 

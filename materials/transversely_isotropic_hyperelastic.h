@@ -67,6 +67,10 @@ public:
 
   std::string model_name() const override;
   bool uses_fibers() const override { return with_fibers; }
+  const FailureParameters* failure_criterion() const override
+  {
+    return prm.failure.enabled ? &prm.failure : nullptr;
+  }
 
   void update_point(const Tensor2& F, const Vector3& a0, std::uint8_t& failure,
                     PlasticHistory& unused, PointResponse& response) const;

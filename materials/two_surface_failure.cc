@@ -63,4 +63,29 @@ std::uint8_t updated_failure_flags(const FailureParameters& parameters, const Te
   }
   return flags;
 }
+double matrix_shear_at(const FailureParameters& parameters, const Tensor2& F)
+{
+  return matrix_shear_measure(parameters.shear_measure, symmetric_eigenvalues(F * F.transpose()));
+}
+
+double matrix_shear_bound(const FailureParameters& parameters, const Tensor2& F)
+{
+  if (parameters.shear_measure == ShearMeasure::log_stretch_ratio)
+    return matrix_shear_at(parameters, F);
+  const double factor =
+      parameters.shear_measure == ShearMeasure::principal_green_difference ? 0.5 : 0.25;
+  const Tensor2 B = F * F.transpose();
+  const double q = B.trace() / 3.0;
+  return factor * std::sqrt(2.0 * (B - q * Tensor2::Identity()).squaredNorm());
+}
+
+std::uint8_t flags_after_update(const FailureParameters& parameters, const Tensor2& F,
+                                const Vector3& a0, const bool check_fibers,
+                                const std::uint8_t byte)
+{
+  const std::uint8_t flags = byte & total_failure;
+  if (byte & failure_decided_outside)
+    return flags | ((byte >> 2) & total_failure);
+  return updated_failure_flags(parameters, F, a0, check_fibers, flags);
+}
 } // namespace vulnus::materials

@@ -24,4 +24,16 @@ double matrix_shear_measure(ShearMeasure measure, const Vector3& eigenvalues_des
 /// when failure is disabled, in which case old_flags is returned unchanged.
 std::uint8_t updated_failure_flags(const FailureParameters& parameters, const Tensor2& F,
                                    const Vector3& a0, bool check_fibers, std::uint8_t old_flags);
+
+/// The matrix shear measure at F (the parameters' choice), exactly.
+double matrix_shear_at(const FailureParameters& parameters, const Tensor2& F);
+/// An upper bound of matrix_shear_at without eigenvalues (sqrt(2) |dev B| times the factor
+/// of the difference measures; the exact value for the logarithmic one).
+double matrix_shear_bound(const FailureParameters& parameters, const Tensor2& F);
+
+/// The flags after an update, given the byte the caller left: its failure bits plus, when it
+/// set failure_decided_outside, the failures it decided (the *_fails_now bits); otherwise the
+/// local criterion decides. The result holds the failure bits only.
+std::uint8_t flags_after_update(const FailureParameters& parameters, const Tensor2& F,
+                                const Vector3& a0, bool check_fibers, std::uint8_t byte);
 } // namespace vulnus::materials

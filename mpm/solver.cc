@@ -3,6 +3,8 @@
 
 #include "materials/material_registry.h"
 #include "mpm/body_builder.h"
+#include "mpm/nonlocal_failure.h"
+#include "materials/material_parameters.h"
 #include "mpm/point_transfer.h"
 
 #include <algorithm>
@@ -36,6 +38,25 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
                                   body.material + "'; use one of the names in Scene/Materials");
     materials_of_body.push_back(owned_materials[it - material_names.begin()].get());
   }
+
+  nonlocal_failure = uses_nonlocal_failure(materials_of_body);
+  for (std::size_t b = 0; b < n_bodies; ++b)
+    if (const materials::FailureParameters* c = materials_of_body[b]->failure_criterion();
+        c && c->regularization_length > 0.0)
+    {
+      const std::string entry = "Material " + scene.bodies[b].material +
+                                "/Failure/Regularization length";
+      if (c->regularization_length < 0.5 * scene.cell_size)
+        throw std::invalid_argument(
+          entry + ": l = " + std::to_string(c->regularization_length) +
+          " m is below half the cell size h = " + std::to_string(scene.cell_size) +
+          " m, where a point's mean holds hardly more than itself; give l >= h (a few h)");
+      if (ranks.distributed())
+        throw std::invalid_argument(entry + ": the nonlocal criterion runs on one MPI rank "
+                                            "only, this run has " +
+                                    std::to_string(ranks.size()) +
+                                    "; set it to 0 or run on one rank");
+    }
 
   // A distributed run cuts the slabs from the points' positions first, then each rank builds
   // only the points of its own slab.
@@ -365,6 +386,8 @@ void Solver::advance(const double cap)
   lap(timings.grid_to_particle);
 
   stress_settings.time_step = dt;
+  if (nonlocal_failure)
+    decide_nonlocal_failures(materials_of_body, particles);
   update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
   if (subcycle)
     advance_projectile_substeps(dt);

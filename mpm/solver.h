@@ -254,6 +254,7 @@ private:
   std::vector<Vector3> projectile_trial_velocity; ///< per active node, before contact
   std::vector<Vector3> projectile_contact_force;  ///< per projectile point of this rank
   int n_projectile_substeps = 0;
+  bool nonlocal_failure = false; ///< a body's law asks for the nonlocal failure criterion
   bool contact_active = false;
   int projectile_body = -1;
   Vector3 flight_axis = Vector3::UnitY();

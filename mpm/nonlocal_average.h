@@ -1,0 +1,70 @@
+// Nonlocal means over material points: the mean of a point field over the points within a
+// radius l of a point in the reference configuration, weighted by the bell function
+// (1 - r^2 / l^2)^2 and the points' reference volumes. The points are binned by reference
+// position into cubic cells of edge l/2, so a mean visits the 125 cells around its point.
+#pragma once
+
+#include "mpm/particles.h"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace vulnus::mpm
+{
+class NonlocalNeighbourhood
+{
+public:
+  /// Bins points [begin, end) of `points` (one body) by reference position.
+  NonlocalNeighbourhood(const Particles& points, std::size_t begin, std::size_t end,
+                        double radius);
+
+  /// The weighted mean of a field over the binned points q with include set that lie within
+  /// the radius of point p (p itself counts when included); 0 when there is none. `values`
+  /// and `include` are in cell order (in_cell_order), so the loop reads memory in sequence.
+  double mean(std::size_t p, const double* values, const char* include) const;
+  /// The means of two fields in one pass.
+  std::array<double, 2> means(std::size_t p, const double* first_values,
+                              const double* second_values, const char* include) const;
+  /// A field given per binned point (index q - begin) rearranged into cell order.
+  template <class T>
+  std::vector<T> in_cell_order(const T* values) const
+  {
+    std::vector<T> sorted(order.size());
+    for (std::size_t s = 0; s < order.size(); ++s)
+      sorted[s] = values[order[s] - first];
+    return sorted;
+  }
+
+  std::size_t n_cells() const { return cell_start.size() - 1; }
+  /// Index of the cell holding binned point p.
+  std::size_t cell_of(std::size_t p) const { return cell_of_point[p - first]; }
+  /// Flags every cell that holds a point within the radius of a point in a flagged cell (the
+  /// cells within two cells of it).
+  std::vector<char> grown_by_the_radius(const std::vector<char>& cell_flags) const;
+
+private:
+  static constexpr int reach = 2; ///< cells per radius
+  template <int n_fields>
+  std::array<double, n_fields> weighted_means(std::size_t p,
+                                              const std::array<const double*, n_fields>& values,
+                                              const char* include) const;
+  std::array<int, 3> cell_coordinates(const Vector3f& x) const;
+  std::size_t cell_index(const std::array<int, 3>& c) const
+  {
+    return static_cast<std::size_t>(c[0]) +
+           n[0] * (static_cast<std::size_t>(c[1]) + n[1] * static_cast<std::size_t>(c[2]));
+  }
+
+  const Particles& points;
+  std::size_t first = 0;
+  double radius = 0.0;
+  Vector3f origin = Vector3f::Zero();
+  std::array<std::size_t, 3> n{{1, 1, 1}};
+  std::vector<std::size_t> cell_of_point; ///< per binned point
+  std::vector<std::size_t> cell_start;    ///< per cell, into order (plus the end)
+  std::vector<std::size_t> order;         ///< binned point indices, cell by cell
+  std::vector<Vector3f> position;         ///< reference positions in cell order
+  std::vector<float> volume;              ///< reference volumes in cell order
+};
+} // namespace vulnus::mpm

@@ -1,0 +1,101 @@
+// Hot cells (a point past a limit by the cheap bound), candidates within the radius of them,
+// exact measures within the radius of those, then the means at the candidates.
+#include "mpm/nonlocal_failure.h"
+
+#include "materials/material_parameters.h"
+#include "materials/two_surface_failure.h"
+#include "mpm/nonlocal_average.h"
+
+namespace vulnus::mpm
+{
+namespace
+{
+const materials::FailureParameters* regularized_criterion(const materials::Material& material)
+{
+  const materials::FailureParameters* c = material.failure_criterion();
+  return c && c->regularization_length > 0.0 ? c : nullptr;
+}
+
+void decide_for_body(const materials::FailureParameters& c, const bool fibers,
+                     Particles& points, const std::size_t begin, const std::size_t end)
+{
+  const long n = static_cast<long>(end - begin);
+  if (n == 0)
+    return;
+  const NonlocalNeighbourhood neighbourhood(points, begin, end, c.regularization_length);
+  std::vector<double> shear(n), stretch(n, 0.0);
+  std::vector<char> counted(n);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+  {
+    const std::size_t p = begin + i;
+    counted[i] = (points.failure[p] & materials::total_failure) != materials::total_failure;
+    const Tensor2& F = points.deformation_gradient[p];
+    shear[i] = materials::matrix_shear_bound(c, F);
+    if (fibers)
+      stretch[i] = (F * points.fiber_direction[p].cast<double>().normalized()).norm();
+  }
+  std::vector<char> hot(neighbourhood.n_cells(), 0);
+  for (long i = 0; i < n; ++i)
+    if (counted[i] && (shear[i] > c.matrix_shear_limit ||
+                       (fibers && stretch[i] > c.fiber_stretch_limit)))
+      hot[neighbourhood.cell_of(begin + i)] = 1;
+  const std::vector<char> candidate = neighbourhood.grown_by_the_radius(hot);
+  const std::vector<char> measured = neighbourhood.grown_by_the_radius(candidate);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    if (measured[neighbourhood.cell_of(begin + i)])
+      shear[i] = materials::matrix_shear_at(c, points.deformation_gradient[begin + i]);
+  const std::vector<double> shear_sorted = neighbourhood.in_cell_order(shear.data());
+  const std::vector<double> stretch_sorted = neighbourhood.in_cell_order(stretch.data());
+  const std::vector<char> counted_sorted = neighbourhood.in_cell_order(counted.data());
+#pragma omp parallel for schedule(dynamic, 256)
+  for (long i = 0; i < n; ++i)
+  {
+    const std::size_t p = begin + i;
+    std::uint8_t byte = (points.failure[p] & materials::total_failure) |
+                        materials::failure_decided_outside;
+    if (counted[i] && candidate[neighbourhood.cell_of(p)])
+    {
+      const bool matrix = !(byte & materials::matrix_failed);
+      const bool fiber = fibers && !(byte & materials::fiber_failed);
+      if (matrix && fiber)
+      {
+        const std::array<double, 2> m = neighbourhood.means(
+          p, shear_sorted.data(), stretch_sorted.data(), counted_sorted.data());
+        if (m[0] > c.matrix_shear_limit)
+          byte |= materials::matrix_fails_now;
+        if (m[1] > c.fiber_stretch_limit)
+          byte |= materials::fibers_fail_now;
+      }
+      else if (matrix &&
+               neighbourhood.mean(p, shear_sorted.data(), counted_sorted.data()) >
+                 c.matrix_shear_limit)
+        byte |= materials::matrix_fails_now;
+      else if (fiber &&
+               neighbourhood.mean(p, stretch_sorted.data(), counted_sorted.data()) >
+                 c.fiber_stretch_limit)
+        byte |= materials::fibers_fail_now;
+    }
+    points.failure[p] = byte;
+  }
+}
+} // namespace
+
+bool uses_nonlocal_failure(const std::vector<const materials::Material*>& body_material)
+{
+  for (const materials::Material* m : body_material)
+    if (regularized_criterion(*m))
+      return true;
+  return false;
+}
+
+void decide_nonlocal_failures(const std::vector<const materials::Material*>& body_material,
+                              Particles& points)
+{
+  for (std::size_t b = 0; b < points.n_bodies(); ++b)
+    if (const materials::FailureParameters* c = regularized_criterion(*body_material[b]))
+      decide_for_body(*c, body_material[b]->uses_fibers(), points, points.begin_of(b),
+                      points.end_of(b));
+}
+} // namespace vulnus::mpm

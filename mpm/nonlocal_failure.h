@@ -1,0 +1,27 @@
+// The nonlocal failure criterion of the tissue (Failure/Regularization length l > 0): each
+// point's matrix shear measure and fiber stretch are averaged over the points within l in
+// the reference configuration (mpm/nonlocal_average.h) before they are compared with the
+// limits, so a failed zone cannot be narrower than about l whatever the cell size. Only
+// points near a point whose measure passes a limit can fail, so the means (and the
+// eigenvalues of the shear measure) are computed there alone.
+#pragma once
+
+#include "materials/material.h"
+#include "mpm/particles.h"
+
+#include <vector>
+
+namespace vulnus::mpm
+{
+/// For every body whose law has a failure criterion with a regularization length: marks
+/// each of its points failure_decided_outside and sets matrix_fails_now / fibers_fail_now
+/// where the nonlocal mean of the intact phase's measure exceeds its limit. Totally failed
+/// points (debris, F reset to a volume change) neither fail again nor count in the means.
+/// Call after the deformation update and right before the stress update, which turns the
+/// marks into failures.
+void decide_nonlocal_failures(const std::vector<const materials::Material*>& body_material,
+                              Particles& points);
+
+/// Whether any body's law asks for the nonlocal criterion.
+bool uses_nonlocal_failure(const std::vector<const materials::Material*>& body_material);
+} // namespace vulnus::mpm
