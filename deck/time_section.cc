@@ -20,8 +20,10 @@ void declare_time_section(EntryTable& table)
                 "once per scene step with the projectile leading (the target's nodes take its "
                 "velocity, as a rigid body's; it takes their momentum as a load spread over its "
                 "substeps): the wound then converges in the step and matches the rigid "
-                "projectile's (docs/converged_wound.md section 13). false: the whole scene "
-                "steps at the projectile's wave speed and contact treats it like the target.");
+                "projectile's (docs/converged_wound.md section 13). It applies to a projectile "
+                "whose impedance rho c is at least 10 times every other deformable body's; a "
+                "softer one steps with the scene. false: the whole scene steps at the "
+                "projectile's wave speed and contact treats it like the target.");
   table.declare("Artificial viscosity linear", "0.06", Patterns::Double(0.0),
                 "Linear bulk viscosity coefficient q1 [-] of the shock viscosity q = rho (q1 c h "
                 "|tr D| + q2 h^2 (tr D)^2), acting in compression only (0: off). The default, "

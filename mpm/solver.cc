@@ -152,11 +152,27 @@ void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& 
   energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
 }
 
+bool Solver::projectile_is_far_stiffer() const
+{
+  // Impedance rho c of each deformable body at the start (its stiffest point), over all ranks.
+  std::vector<double> impedance(particles.n_bodies(), 0.0);
+  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+    if (!grid_settings.body_is_rigid[b])
+      for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
+        impedance[b] = std::max(impedance[b], parameters.bodies[b].density * particles.wave_speed[p]);
+  ranks.max(impedance.data(), static_cast<int>(impedance.size()));
+  for (std::size_t b = 0; b < impedance.size(); ++b)
+    if (static_cast<int>(b) != projectile_body && !grid_settings.body_is_rigid[b] &&
+        impedance[projectile_body] < minimum_impedance_ratio * impedance[b])
+      return false;
+  return true;
+}
+
 void Solver::plan_projectile_subcycle()
 {
   const int b = projectile_body;
   if (!parameters.subcycle_projectile || b < 0 || grid_settings.body_is_rigid[b] ||
-      particles.n_bodies() < 2)
+      particles.n_bodies() < 2 || !projectile_is_far_stiffer())
     return;
   SubcycleStages stages;
   stages.transfer = transfer;

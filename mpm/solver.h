@@ -172,8 +172,9 @@ public:
   /// Active nodes of the last step (kept across a checkpoint, like the contact results).
   std::size_t active_nodes() const { return n_active_last_step; }
   bool uses_contact() const { return contact_active; }
-  /// Whether the projectile advances in substeps of its own (Time/Subcycle projectile), and
-  /// how many it took in the last step (0: not subcycled).
+  /// Whether the projectile advances in substeps of its own (Time/Subcycle projectile, for a
+  /// deformable projectile with 10 times the others' impedance), and how many it took in the
+  /// last step (0: not subcycled).
   bool subcycles_projectile() const { return subcycle != nullptr; }
   int last_projectile_substeps() const { return n_projectile_substeps; }
   const PhaseTimes& phase_times() const { return timings; }
@@ -183,7 +184,13 @@ private:
   /// The CFL step; per body (when asked) the fastest point speed |v| and signal speed c + |v|.
   /// Sets the projectile's FLIP fraction for this step (scene.projectile_velocity_relaxation).
   void relax_projectile_velocities(double dt, const std::vector<double>& signal_speed);
-  /// Builds the projectile's subcycle when the scene asks for one and it applies.
+  /// Leading the contact assumes the interface moves with the projectile: its impedance
+  /// rho c must exceed every other deformable body's this many times (copper on tissue: 3000).
+  static constexpr double minimum_impedance_ratio = 10.0;
+  /// Whether the deformable projectile is that much stiffer than the other bodies. Collective.
+  bool projectile_is_far_stiffer() const;
+  /// Builds the projectile's subcycle when the scene asks for one and it applies (a
+  /// deformable projectile far stiffer than the others).
   void plan_projectile_subcycle();
   /// The projectile's substeps over this step dt (after the other bodies' step). Distributed,
   /// every rank advances the whole projectile (gathered from all) and keeps its own points.

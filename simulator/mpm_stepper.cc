@@ -25,7 +25,7 @@ std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver)
 {
   std::vector<std::string> warnings;
   if (solver.projectile() >= 0 && !solver.body_material(solver.projectile()).is_rigid() &&
-      !solver.subcycles_projectile() && solver.uses_contact())
+      !solver.scene().subcycle_projectile && solver.uses_contact())
     warnings.push_back(
       "the deformable projectile was not subcycled (Time/Subcycle projectile = false): its "
       "wound is not converged in the time step (in the paper scenes its exit velocity falls "

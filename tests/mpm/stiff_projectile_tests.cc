@@ -27,6 +27,7 @@ struct BallRun
   std::size_t steps = 0;
   double time_step = 0.0;        ///< the last scene step (s)
   int substeps = 0;              ///< the ball's most substeps in a step
+  bool subcycled = false;
 };
 
 struct BallSettings
@@ -35,10 +36,12 @@ struct BallSettings
   bool subcycle = true;
   bool rigid = false;
   double cfl = 0.2;
+  bool copper = true; ///< false: the ball is of the slab's gel
 };
 
 BallRun fire_copper_ball(const BallSettings& settings)
 {
+  BallRun run;
   mpm::SceneParameters scene =
     test::empty_scene(Vector3(-8e-3, -6e-3, -8e-3), Vector3(8e-3, 10e-3, 8e-3), 1e-3);
   scene.projectile_velocity_relaxation = settings.relaxation;
@@ -54,12 +57,13 @@ BallRun fire_copper_ball(const BallSettings& settings)
   scene.materials.push_back(copper);
   scene.bodies.push_back(test::box_body("slab", "gel", Vector3(-8e-3, 0, -8e-3),
                                         Vector3(8e-3, 6e-3, 8e-3), 1060.0, 2));
-  mpm::BodyParameters ball =
-    test::sphere_body("ball", "copper", Vector3(0, -3e-3, 0), 2.5e-3, 8930.0, 2);
+  mpm::BodyParameters ball = test::sphere_body("ball", settings.copper ? "copper" : "gel",
+                                               Vector3(0, -3e-3, 0), 2.5e-3, 8930.0, 2);
   ball.initial_velocity = Vector3(0, 150, 0);
   ball.is_projectile = true;
   scene.bodies.push_back(ball);
   mpm::Solver solver(scene);
+  run.subcycled = solver.subcycles_projectile();
   const mpm::SceneDiagnostics start = solver.diagnostics();
   int substeps = 0;
   while (!solver.finished())
@@ -68,7 +72,6 @@ BallRun fire_copper_ball(const BallSettings& settings)
     substeps = std::max(substeps, solver.last_projectile_substeps());
   }
   const mpm::SceneDiagnostics end = solver.diagnostics();
-  BallRun run;
   run.peak_yield_ratio = solver.peak_von_mises_over_yield()[1];
   run.ball_velocity = end.bodies[1].velocity[1];
   run.momentum_error = (end.momentum - start.momentum).norm() / start.momentum.norm();
@@ -157,4 +160,17 @@ TEST(MpmStiffProjectile, SubcycledBallConvergesLikeTheRigidBall)
             change(150.0 - rigid_coarse.ball_velocity, 150.0 - rigid_fine.ball_velocity) + 0.02);
   EXPECT_LT(change(coarse.gel_kinetic_energy, fine.gel_kinetic_energy),
             change(rigid_coarse.gel_kinetic_energy, rigid_fine.gel_kinetic_energy) + 0.02);
+}
+
+TEST(MpmStiffProjectile, OnlyAFarStifferProjectileIsSubcycled)
+{
+  // The copper ball has about 3000 times the gel's impedance and leads the contact; a ball of
+  // the gel itself (the same wave speed, 8.4 times the density) is below the ratio of 10 and
+  // steps with the scene, as Time/Subcycle projectile documents.
+  BallSettings gel_ball;
+  gel_ball.copper = false;
+  EXPECT_TRUE(fire_copper_ball({}).subcycled);
+  const BallRun soft = fire_copper_ball(gel_ball);
+  EXPECT_FALSE(soft.subcycled);
+  EXPECT_EQ(soft.substeps, 0);
 }
