@@ -13,7 +13,10 @@ namespace vulnus::mpm
 ProjectileSubcycle::ProjectileSubcycle(const Grid& scene_grid, const SubcycleStages& settings)
   : grid(scene_grid.origin(), scene_grid.upper_corner(), scene_grid.cell_size()), stages(settings)
 {
+  // One body on its own grid: no contact, and no ownership test (every rank of a distributed
+  // run advances the whole body; the scene's test would look its keys up in the scene's grid).
   stages.grid_update.contact = false;
+  stages.grid_update.owns_node = nullptr;
   stages.kinematics.body_flip_fraction.clear();
   stages.kinematics.body_advanced_elsewhere.clear();
   stages.stress.body_advanced_elsewhere.clear();

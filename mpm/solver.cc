@@ -179,8 +179,6 @@ void Solver::plan_projectile_subcycle()
   stages.transfer.half_size_cells = {transfer.half_size_cells[b]};
   stages.transfer.contact_normals = false;
   stages.grid_update = grid_settings;
-  stages.grid_update.contact = false;
-  stages.grid_update.owns_node = nullptr; // its own grid; every rank advances the whole body
   stages.grid_update.body_is_rigid = {0};
   stages.grid_update.rigid_velocity = {Vector3::Zero()};
   stages.kinematics = kinematics;
