@@ -1,6 +1,7 @@
 // The MPM/FE split of a hybrid scene and its checks.
 #include "coupling/decomposition.h"
 
+#include "fem/fe_scene_of_body.h"
 #include "materials/material_registry.h"
 
 #include <algorithm>
@@ -81,55 +82,6 @@ void check_bullet_path(const mpm::SceneParameters& scene, const mpm::BodyParamet
   }
 }
 } // namespace
-
-fem::FeSceneParameters fe_region_of_body(const mpm::SceneParameters& scene, const std::size_t b,
-                                         const fem::FeSceneParameters& numerics)
-{
-  const mpm::BodyParameters& body = scene.bodies.at(b);
-  fem::FeSceneParameters fe = numerics;
-  for (int d = 0; d < 3; ++d)
-  {
-    fe.slab_min[d] = body.box_min[d];
-    fe.slab_max[d] = body.box_max[d];
-  }
-  fe.has_hole = false;
-  fe.interface_cell_size = scene.cell_size;
-  for (const mpm::NamedMaterial& m : scene.materials)
-    if (m.name == body.material)
-      fe.material = m.parameters;
-  fe.density = body.density;
-  fe.fibers = body.fibers;
-  fe.end_time = scene.end_time;
-  // A face on the grid boundary takes the grid's support; a loaded face (velocity or
-  // traction from the numerics) keeps its load; any other face is free.
-  for (unsigned int f = 0; f < fem::n_slab_faces; ++f)
-  {
-    const fem::FaceParameters::Condition given = numerics.faces[f].condition;
-    if (given == fem::FaceParameters::Condition::velocity ||
-        given == fem::FaceParameters::Condition::traction)
-      continue;
-    const int d = f / 2;
-    const bool upper = f % 2;
-    const double body_face = upper ? body.box_max[d] : body.box_min[d];
-    const double grid_face = upper ? scene.domain_max[d] : scene.domain_min[d];
-    fem::FaceParameters face;
-    if (std::abs(body_face - grid_face) <= 1e-6 * scene.cell_size)
-      switch (scene.domain_faces[f])
-      {
-      case mpm::FaceCondition::fixed:
-        face.condition = fem::FaceParameters::Condition::fixed;
-        break;
-      case mpm::FaceCondition::roller:
-        face.condition = fem::FaceParameters::Condition::roller;
-        break;
-      case mpm::FaceCondition::free:
-        face.condition = fem::FaceParameters::Condition::free;
-        break;
-      }
-    fe.faces[f] = face;
-  }
-  return fe;
-}
 
 int split_body_index(const mpm::SceneParameters& scene, const HybridParameters& hybrid)
 {
@@ -271,7 +223,7 @@ HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters&
   }
 
   fem::FeSceneParameters& fe = split.fe;
-  fe = fe_region_of_body(scene, split.coupled_body, far_field);
+  fe = fem::fe_scene_of_body(scene, split.coupled_body, far_field);
   for (int d = 0; d < 3; ++d)
   {
     fe.hole_min[d] = zone.box_min[d];

@@ -36,12 +36,6 @@ std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& sc
 HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters& hybrid,
                       const fem::FeSceneParameters& far_field);
 
-/// The FE description of box body `body` alone (no hole): geometry, material, density, fibers
-/// and end time from the scene; a face on the grid boundary takes the grid's support, a face
-/// loaded in `numerics` keeps its load, others are free. Numerics come from `numerics`.
-fem::FeSceneParameters fe_region_of_body(const mpm::SceneParameters& scene, std::size_t body,
-                                         const fem::FeSceneParameters& numerics);
-
 /// Index of the body the hybrid splits (hybrid.body or the default choice), or -1.
 int split_body_index(const mpm::SceneParameters& scene, const HybridParameters& hybrid);
 } // namespace vulnus::coupling

@@ -65,7 +65,7 @@ void HybridSolver::match_interface_nodes(MPI_Comm communicator)
         (grid.node_position(grid.node_key(ijk[0], ijk[1], ijk[2])) - x).norm() > 1e-6 * h)
     {
       std::ostringstream s;
-      s << "Hybrid/Zone min, Hybrid/Zone max: the FE interface node at (" << x[0] << ", " << x[1]
+      s << "the MPM zone's bounds: the FE interface node at (" << x[0] << ", " << x[1]
         << ", " << x[2] << ") m is not an MPM grid node; the zone must lie on grid nodes";
       problem = s.str();
       break;

@@ -7,6 +7,7 @@
 #include "deck/scene_size.h"
 #include "materials/material_registry.h"
 #include "mpm/body_builder.h"
+#include "mpm/nonlocal_failure.h"
 
 #include <algorithm>
 #include <array>
@@ -188,17 +189,9 @@ void check_failure_regularization(const mpm::SceneParameters& scene, Checker& ch
     const std::string entry = "Material " + material.name + "/" +
                               model_subsection(material.parameters.model) +
                               "/Failure/Regularization length";
-    check.require(!(scene.cell_size > 0.0) || failure.regularization_length >= 0.5 * scene.cell_size,
-                  entry,
-                  "l = " + number(failure.regularization_length) +
-                    " m is below half the cell size " + number(scene.cell_size) +
-                    " m, so a point's mean would hold hardly more than itself",
-                  "give l of a few cell sizes (the failed zone is then about l wide), or 0 for "
-                  "the local criterion");
-    check.require(io::launcher_size() <= 1, entry,
-                  "the nonlocal criterion runs on one MPI rank only (this run has " +
-                    std::to_string(io::launcher_size()) + ")",
-                  "run on one rank, or set it to 0 for the local criterion");
+    for (const ParameterProblem& p :
+         mpm::check_regularization(failure, scene.cell_size, io::launcher_size()))
+      check.require(false, entry, p.problem, p.remedy);
   }
 }
 

@@ -2,6 +2,7 @@
 #include "deck/method_checks.h"
 
 #include "coupling/decomposition.h"
+#include "fem/fe_scene_of_body.h"
 #include "materials/material_registry.h"
 
 #include <algorithm>
@@ -98,7 +99,7 @@ void check_fe_numerics(const fem::FeSceneParameters& fe, const EntryLocator& loc
 
 fem::FeSceneParameters pure_fe_scene(const RunParameters& parameters)
 {
-  return coupling::fe_region_of_body(parameters.scene, 0, parameters.far_field);
+  return fem::fe_scene_of_body(parameters.scene, 0, parameters.far_field);
 }
 
 std::vector<std::string> check_method(const RunParameters& parameters, const EntryLocator& locator)

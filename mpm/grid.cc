@@ -11,12 +11,12 @@ Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double 
     : domain_min(domain_min_), h(cell_size), inverse_h(1.0 / cell_size)
 {
   if (!(cell_size > 0.0))
-    throw std::invalid_argument("Grid/Cell size: must be positive");
+    throw std::invalid_argument("Grid: the cell size must be positive");
   for (int d = 0; d < 3; ++d)
   {
     const double extent = domain_max_[d] - domain_min_[d];
     if (!(extent > 0.0))
-      throw std::invalid_argument("Grid/Domain: maximum must exceed minimum along axis " +
+      throw std::invalid_argument("Grid: the domain maximum must exceed the minimum along axis " +
                                   std::to_string(d));
   }
   n_cells = cell_counts(domain_min_, domain_max_, cell_size);

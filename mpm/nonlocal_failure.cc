@@ -6,6 +6,9 @@
 #include "materials/two_surface_failure.h"
 #include "mpm/nonlocal_average.h"
 
+#include <sstream>
+#include <string>
+
 namespace vulnus::mpm
 {
 namespace
@@ -97,5 +100,29 @@ void decide_nonlocal_failures(const std::vector<const materials::Material*>& bod
     if (const materials::FailureParameters* c = regularized_criterion(*body_material[b]))
       decide_for_body(*c, body_material[b]->uses_fibers(), points, points.begin_of(b),
                       points.end_of(b));
+}
+
+std::vector<ParameterProblem> check_regularization(const materials::FailureParameters& failure,
+                                                   const double cell_size, const int n_ranks)
+{
+  std::vector<ParameterProblem> problems;
+  const double l = failure.regularization_length;
+  if (!failure.enabled || !(l > 0.0))
+    return problems;
+  if (cell_size > 0.0 && l < 0.5 * cell_size)
+  {
+    std::ostringstream s;
+    s << "l = " << l << " m is below half the cell size " << cell_size
+      << " m, so a point's mean would hold hardly more than itself";
+    problems.push_back({{"regularization_length"}, s.str(),
+                        "give l of a few cell sizes (the failed zone is then about l wide), or "
+                        "0 for the local criterion"});
+  }
+  if (n_ranks > 1)
+    problems.push_back({{"regularization_length"},
+                        "the nonlocal criterion runs on one MPI rank only (this run has " +
+                          std::to_string(n_ranks) + ")",
+                        "run on one rank, or set it to 0 for the local criterion"});
+  return problems;
 }
 } // namespace vulnus::mpm

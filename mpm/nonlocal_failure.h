@@ -6,6 +6,7 @@
 // eigenvalues of the shear measure) are computed there alone.
 #pragma once
 
+#include "core/parameter_problem.h"
 #include "materials/material.h"
 #include "mpm/particles.h"
 
@@ -21,6 +22,12 @@ namespace vulnus::mpm
 /// marks into failures.
 void decide_nonlocal_failures(const std::vector<const materials::Material*>& body_material,
                               Particles& points);
+
+/// Problems of a failure criterion's regularization length (parameter "regularization_length")
+/// on a grid of cell size h with n_ranks MPI ranks: the means need l >= h / 2 to hold more than
+/// the point itself, and they run on one rank.
+std::vector<ParameterProblem> check_regularization(const materials::FailureParameters& failure,
+                                                   double cell_size, int n_ranks);
 
 /// Whether any body's law asks for the nonlocal criterion.
 bool uses_nonlocal_failure(const std::vector<const materials::Material*>& body_material);

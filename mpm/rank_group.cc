@@ -174,4 +174,19 @@ std::string RankGroup::first_message(const std::string& local) const
   check(MPI_Bcast(text.data(), message_size(length), MPI_CHAR, holder, comm), "MPI_Bcast");
   return text;
 }
+
+RunFailure RankGroup::first_failure(const RunFailure& local) const
+{
+  if (!distributed())
+    return local;
+  const char separator = '\x1f';
+  const std::string joined =
+    local.empty() ? std::string() : local.problem + separator + local.cause + separator + local.remedy;
+  const std::string first = first_message(joined);
+  if (first.empty())
+    return {};
+  const std::size_t a = first.find(separator);
+  const std::size_t b = first.find(separator, a + 1);
+  return {first.substr(0, a), first.substr(a + 1, b - a - 1), first.substr(b + 1)};
+}
 } // namespace vulnus::mpm

@@ -4,6 +4,8 @@
 // need neither MPI_Init nor mpirun.
 #pragma once
 
+#include "core/run_failure.h"
+
 #include <mpi.h>
 
 #include <cstdint>
@@ -46,6 +48,8 @@ public:
 
   /// The text of the lowest rank holding a non-empty one (empty when none does), on every rank.
   std::string first_message(const std::string& local) const;
+  /// The failure of the lowest rank holding one (empty when none does), on every rank.
+  RunFailure first_failure(const RunFailure& local) const;
 
 private:
   MPI_Comm comm;

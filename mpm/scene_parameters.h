@@ -1,19 +1,13 @@
-// Plain structs describing an MPM scene (grid, bodies, boundaries, contact, time stepping),
-// built by the deck reader in app/ and consumed by the MPM solver. SI units.
+// Plain structs describing an MPM scene: the neutral scene description (bodies, materials,
+// faces) plus the grid's numerics, contact and time stepping; built by the deck reader and
+// consumed by the MPM solver. SI units.
 #pragma once
 
-#include "materials/fiber_field.h"
-#include "materials/material_parameters.h"
-
-#include <Eigen/Core>
-
-#include <array>
-#include <string>
-#include <vector>
+#include "scene/scene_description.h"
 
 namespace vulnus::mpm
 {
-using Vector3 = Eigen::Vector3d;
+using scene::Vector3;
 
 enum class ShapeFunction
 {
@@ -47,60 +41,14 @@ enum class DeformationUpdate
   forward_euler ///< F <- (I + dt L) F: stretches a spinning point by (1 + (w dt)^2)^(1/2)
 };
 
-enum class FaceCondition
-{
-  free,
-  fixed,
-  roller ///< normal velocity zero, tangential free
-};
-
-/// Faces in the order x-, x+, y-, y+, z-, z+.
-using FaceConditions = std::array<FaceCondition, 6>;
-
-enum class BodyShape
-{
-  box,
-  cylinder, ///< bullet: a cylinder with a nose along an axis
-  sphere
-};
-
-enum class NoseShape
-{
-  flat,
-  hemispherical
-};
-
-enum class RigidMotion
-{
-  prescribed, ///< keeps its initial velocity
-  free        ///< rigid body driven by the contact force
-};
-
-struct BodyParameters
-{
-  std::string name;
-  std::string material; ///< name of an entry of SceneParameters::materials
-  BodyShape shape = BodyShape::box;
-  Vector3 box_min = Vector3::Zero(); ///< box
-  Vector3 box_max = Vector3::Zero();
-  Vector3 center = Vector3::Zero(); ///< sphere centre; cylinder: centre of the tail face
-  double radius = 0.0;              ///< sphere and cylinder
-  double length = 0.0;              ///< cylinder overall length including the nose
-  Vector3 axis = Vector3::UnitY();  ///< cylinder axis, unit, pointing from tail to nose
-  NoseShape nose = NoseShape::hemispherical;
-  double density = 1060.0;              ///< kg/m^3
-  Vector3 initial_velocity = Vector3::Zero(); ///< m/s
-  unsigned int particles_per_cell = 2;  ///< per axis
-  RigidMotion rigid_motion = RigidMotion::free; ///< used when the material is rigid
-  materials::FiberFieldParameters fibers;       ///< used when the material has fibers
-  bool is_projectile = false; ///< the body whose position/velocity the history reports
-};
-
-struct NamedMaterial
-{
-  std::string name;
-  materials::MaterialParameters parameters;
-};
+using scene::BodyParameters;
+using scene::BodyShape;
+using scene::FaceCondition;
+using scene::FaceConditions;
+using scene::find_material;
+using scene::NamedMaterial;
+using scene::NoseShape;
+using scene::RigidMotion;
 
 struct ContactParameters
 {
@@ -115,22 +63,13 @@ struct ContactParameters
   double proximity_distance = 0.8;
 };
 
-struct SceneParameters
+/// The scene and the MPM numerics: the background grid is a structured grid of cubic cells of
+/// cell_size covering [domain_min, domain_max].
+struct SceneParameters : scene::SceneDescription
 {
-  // Background grid: a structured grid of cubic cells covering [domain_min, domain_max].
-  Vector3 domain_min = Vector3::Zero();
-  Vector3 domain_max = Vector3::Zero();
-  double cell_size = 1.0e-3;
   ShapeFunction shape_function = ShapeFunction::linear;
   UpdateScheme update_scheme = UpdateScheme::musl;
-  FaceConditions domain_faces{{FaceCondition::free, FaceCondition::free, FaceCondition::free,
-                               FaceCondition::free, FaceCondition::free, FaceCondition::free}};
-
-  std::vector<NamedMaterial> materials;
-  std::vector<BodyParameters> bodies;
   ContactParameters contact;
-
-  Vector3 gravity = Vector3::Zero(); ///< body force per unit mass, m/s^2
   double cfl = 0.4;
   VelocityTransfer velocity_transfer = VelocityTransfer::flip;
   /// relaxed_apic: tau in units of the Courant time h / max(c + |v|) (the CFL-1 step).
@@ -145,7 +84,6 @@ struct SceneParameters
   /// scene step, with the projectile as the contact leader: see mpm/projectile_subcycle.h).
   bool subcycle_projectile = true;
   DeformationUpdate deformation_update = DeformationUpdate::midpoint;
-  double end_time = 1.0e-3;           ///< s
   double artificial_viscosity_linear = 0.0;    ///< bulk viscosity coefficients (0 = off)
   double artificial_viscosity_quadratic = 0.0;
   double max_time_step = 1.0;          ///< s, cap
@@ -157,13 +95,4 @@ struct SceneParameters
   /// when false, the run stops as a blow-up.
   bool remove_points_leaving_grid = false;
 };
-
-/// The material named `name`, or nullptr.
-inline const NamedMaterial* find_material(const SceneParameters& scene, const std::string& name)
-{
-  for (const NamedMaterial& material : scene.materials)
-    if (material.name == name)
-      return &material;
-  return nullptr;
-}
 } // namespace vulnus::mpm

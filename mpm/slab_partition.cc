@@ -21,7 +21,7 @@ SlabPartition SlabPartition::balanced(const int axis,
       "distributed MPM: the grid has " + std::to_string(n_layers) + " cell layers along axis " +
       std::to_string(axis) + ", fewer than " + std::to_string(min_layers_per_rank) +
       " per rank for " + std::to_string(n_ranks) +
-      " ranks; run on fewer ranks or use smaller cells (Grid/Cell size)");
+      " ranks; run on fewer ranks or use smaller cells");
   SlabPartition p(axis);
   p.cuts.assign(n_ranks + 1, 0);
   p.cuts.front() = lowest;

@@ -41,22 +41,10 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
 
   nonlocal_failure = uses_nonlocal_failure(materials_of_body);
   for (std::size_t b = 0; b < n_bodies; ++b)
-    if (const materials::FailureParameters* c = materials_of_body[b]->failure_criterion();
-        c && c->regularization_length > 0.0)
-    {
-      const std::string entry = "Material " + scene.bodies[b].material +
-                                "/Failure/Regularization length";
-      if (c->regularization_length < 0.5 * scene.cell_size)
-        throw std::invalid_argument(
-          entry + ": l = " + std::to_string(c->regularization_length) +
-          " m is below half the cell size h = " + std::to_string(scene.cell_size) +
-          " m, where a point's mean holds hardly more than itself; give l >= h (a few h)");
-      if (ranks.distributed())
-        throw std::invalid_argument(entry + ": the nonlocal criterion runs on one MPI rank "
-                                            "only, this run has " +
-                                    std::to_string(ranks.size()) +
-                                    "; set it to 0 or run on one rank");
-    }
+    if (const materials::FailureParameters* c = materials_of_body[b]->failure_criterion())
+      for (const ParameterProblem& p : check_regularization(*c, scene.cell_size, ranks.size()))
+        throw std::invalid_argument("material '" + scene.bodies[b].material +
+                                    "', failure regularization length: " + describe(p));
 
   // A distributed run cuts the slabs from the points' positions first, then each rank builds
   // only the points of its own slab.
@@ -323,13 +311,14 @@ void Solver::advance(const double cap)
     peak_point_speed[b] = std::max(peak_point_speed[b], fastest_point[b]);
   if (!(stable >= parameters.min_time_step))
   {
-    std::ostringstream message;
-    message << "time step collapsed at step " << n_steps << ", t = " << current_time
-            << " s: CFL step " << stable << " s is below Time/Minimum time step "
-            << parameters.min_time_step
-            << " s; likely cause: a point moving or vibrating far too fast (CFL too high, "
-               "bulk modulus too large for the cell size, or an unstable contact)";
-    throw BlowUp(message.str());
+    std::ostringstream problem;
+    problem << "time step collapsed at step " << n_steps << ", t = " << current_time
+            << " s: CFL step " << stable << " s is below {min_time_step} "
+            << parameters.min_time_step << " s";
+    throw BlowUp(RunFailure{problem.str(),
+                            "a point moving or vibrating far too fast (a CFL number too high, a "
+                            "bulk modulus too large for the cell size, or an unstable contact)",
+                            "a smaller {cfl}, or check the bulk modulus and the contact settings"});
   }
   time_step = std::min({stable, parameters.end_time - current_time, cap});
   if (time_step <= 0.0)
@@ -368,8 +357,8 @@ void Solver::advance(const double cap)
       projectile_trial_velocity[node] = fields.velocity_new[node * n_bodies + projectile_body];
   }
   resolve_contacts(grid, grid_settings, fields, grid_result);
-  if (const std::string problem = ranks.first_message(rigid_meeting_problem(dt)); !problem.empty())
-    throw BlowUp(problem);
+  if (const RunFailure failure = ranks.first_failure(rigid_meeting_problem(dt)); !failure.empty())
+    throw BlowUp(failure);
   reduce_contact_result();
   accumulated_contact_dissipation += grid_result.contact_dissipation;
   for (int f = 0; f < 6; ++f)
@@ -433,8 +422,8 @@ void Solver::advance(const double cap)
   material_problem = ranks.first_message(material_problem);
   if (!material_problem.empty())
     throw BlowUp(material_problem);
-  if (const std::string problem = ranks.first_message(rigid_face_problem()); !problem.empty())
-    throw BlowUp(problem);
+  if (const RunFailure failure = ranks.first_failure(rigid_face_problem()); !failure.empty())
+    throw BlowUp(failure);
   record_projectile_exit();
   if (parameters.remove_points_leaving_grid)
     remove_points_outside_grid();
@@ -598,12 +587,11 @@ std::string Solver::describe_point(const std::size_t p) const
 
 void Solver::check_state() const
 {
-  const std::string problem = ranks.first_message(state_problem());
-  if (!problem.empty())
-    throw BlowUp(problem);
+  if (const RunFailure failure = ranks.first_failure(state_problem()); !failure.empty())
+    throw BlowUp(failure);
 }
 
-std::string Solver::rigid_meeting_problem(const double dt) const
+RunFailure Solver::rigid_meeting_problem(const double dt) const
 {
   if (grid_result.rigid_meeting_node < 0)
     return {};
@@ -612,13 +600,14 @@ std::string Solver::rigid_meeting_problem(const double dt) const
   s << "rigid bodies '" << parameters.bodies[grid_result.rigid_meeting_bodies[0]].name
     << "' and '" << parameters.bodies[grid_result.rigid_meeting_bodies[1]].name
     << "' met at step " << n_steps + 1 << ", t = " << current_time + dt << " s, at the node ("
-    << x[0] << ", " << x[1] << ", " << x[2]
-    << ") m: contact between two rigid bodies is not modelled (neither can give way, so they "
-       "would pass through each other); make one of them deformable, or keep them apart";
-  return s.str();
+    << x[0] << ", " << x[1] << ", " << x[2] << ") m";
+  return {s.str(),
+          "contact between two rigid bodies is not modelled (neither can give way, so they "
+          "would pass through each other)",
+          "make one of them deformable, or keep them apart"};
 }
 
-std::string Solver::rigid_face_problem() const
+RunFailure Solver::rigid_face_problem() const
 {
   static const char* const face_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
@@ -645,17 +634,18 @@ std::string Solver::rigid_face_problem() const
           << (parameters.domain_faces[face] == FaceCondition::fixed ? "fixed" : "roller") << " "
           << face_names[face] << " face of the domain at step " << n_steps << ", t = "
           << current_time << " s, " << describe_point(p)
-          << "; rigid bodies do not obey face conditions, so it would pass through. Likely "
-             "cause: a projectile aimed at a constrained face; enlarge Grid/Domain min and max, "
-             "make that face free, or end the run earlier";
-        return s.str();
+          << "; rigid bodies do not obey face conditions, so it would pass through";
+        return {s.str(), "a projectile aimed at a constrained face",
+                std::string("enlarge {domain_min} and {domain_max}, make that face free ({"
+                            "domain_faces.") +
+                  face_names[face] + "}), or end the run earlier ({end_time})"};
       }
     }
   }
   return {};
 }
 
-std::string Solver::state_problem() const
+RunFailure Solver::state_problem() const
 {
   const long n = static_cast<long>(particles.size());
   long bad = n;
@@ -676,29 +666,31 @@ std::string Solver::state_problem() const
     return {};
   const Vector3& x = particles.position[bad];
   const double J = particles.deformation_gradient[bad].determinant();
-  std::string what, cause;
+  std::string what, cause, remedy;
   if (!(x.allFinite() && particles.velocity[bad].allFinite() && particles.stress[bad].allFinite()))
   {
     what = "NaN or Inf in position, velocity or stress";
-    cause = "an unstable step: lower Time/CFL, or check the bulk modulus and contact settings";
+    cause = "an unstable step";
+    remedy = "a smaller {cfl}, or check the bulk modulus and the contact settings";
   }
   else if (!(J > 0.0))
   {
     what = "inverted deformation (J = " + std::to_string(J) + ")";
-    cause = "excessive compression in one step: lower Time/CFL, raise the bulk modulus, or add "
-            "artificial viscosity";
+    cause = "excessive compression in one step";
+    remedy = "a smaller {cfl}, a larger bulk modulus, or more shock viscosity "
+             "({artificial_viscosity_linear}, {artificial_viscosity_quadratic})";
   }
   else
   {
     what = "point left the background grid";
-    cause = "enlarge Grid/Domain minimum and maximum so flying fragments stay inside, or end "
-            "the run earlier";
+    cause = "a fragment flying out of the grid";
+    remedy = "enlarge {domain_min} and {domain_max} so flying fragments stay inside, remove "
+             "them as outflow ({remove_points_leaving_grid} = remove), or end the run earlier";
   }
   std::ostringstream s;
-  s << what << " at step " << n_steps << ", t = " << current_time << " s, " << describe_point(bad)
-    << "; likely cause: " << cause;
+  s << what << " at step " << n_steps << ", t = " << current_time << " s, " << describe_point(bad);
   if (ranks.distributed())
     s << " (on rank " << ranks.rank() << " of " << ranks.size() << ")";
-  return s.str();
+  return {s.str(), cause, remedy};
 }
 } // namespace vulnus::mpm

@@ -5,6 +5,7 @@
 // Each stage is a free function over arrays in its own file; this class owns the state.
 #pragma once
 
+#include "core/run_failure.h"
 #include "materials/material.h"
 #include "mpm/diagnostics.h"
 #include "mpm/grid.h"
@@ -32,13 +33,9 @@
 
 namespace vulnus::mpm
 {
-/// A numerical blow-up detected during a step; the message names step, time, point, body,
-/// position and the likely cause.
-class BlowUp : public std::runtime_error
-{
-public:
-  using std::runtime_error::runtime_error;
-};
+/// A numerical blow-up detected during a step: the failure names step, time, point, body,
+/// position, the likely cause and the remedy.
+using vulnus::BlowUp;
 
 /// Wall-clock seconds spent in each stage since the start.
 struct PhaseTimes
@@ -209,12 +206,12 @@ private:
   /// Per body: 1 when its law keeps a plastic history (its points get slots).
   std::vector<char> bodies_with_plastic_history() const;
   void check_state() const;
-  std::string state_problem() const;
+  RunFailure state_problem() const;
   /// A rigid body with a point beyond a fixed or roller domain face (rigid bodies ignore face
   /// conditions, so it would pass through), described; "" when there is none. Local.
-  std::string rigid_face_problem() const;
+  RunFailure rigid_face_problem() const;
   /// Two rigid bodies met in this step's contact pass (grid_result), described; "" when not.
-  std::string rigid_meeting_problem(double dt) const;
+  RunFailure rigid_meeting_problem(double dt) const;
   /// Whether the run ends when the projectile's tail passes the exit plane.
   bool stops_at_projectile_exit() const;
   /// Collective: the smallest x . flight axis of the projectile's points.

@@ -79,7 +79,7 @@ void Solver::migrate_points(const bool to_any_rank)
   std::vector<int> destination(particles.size(), -1);
   std::vector<char> stays(particles.size(), 1);
   std::size_t n_leaving = 0;
-  std::string problem;
+  RunFailure problem;
   for (std::size_t p = 0; p < particles.size(); ++p)
   {
     const int owner = partition.rank_of_position(grid, particles.position[p]);
@@ -89,12 +89,12 @@ void Solver::migrate_points(const bool to_any_rank)
     stays[p] = 0;
     ++n_leaving;
     if (!to_any_rank && std::abs(owner - me) > 1 && problem.empty())
-      problem = "point moved across a whole slab in one step at step " + std::to_string(n_steps) +
-                ", " + describe_point(p) +
-                "; likely cause: an unstable step (lower Time/CFL) or a bullet speed far beyond "
-                "the time step's wave speed";
+      problem = {"point moved across a whole slab in one step at step " +
+                   std::to_string(n_steps) + ", " + describe_point(p),
+                 "an unstable step, or a bullet speed far beyond the time step's wave speed",
+                 "a smaller {cfl}"};
   }
-  problem = ranks.first_message(problem);
+  problem = ranks.first_failure(problem);
   if (!problem.empty())
     throw BlowUp(problem);
 

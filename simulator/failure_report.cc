@@ -1,7 +1,7 @@
 // Failure reports for the exceptions a step can throw.
 #include "simulator/failure_report.h"
 
-#include "mpm/solver.h"
+#include "core/run_failure.h"
 
 #include <deal.II/base/exceptions.h>
 
@@ -37,18 +37,23 @@ std::string paragraph_after(const std::string& text, const std::string& heading)
 }
 } // namespace
 
-FailureReport describe_failure(const std::exception& error)
+FailureReport describe_failure(const std::exception& error,
+                               const std::function<std::string(const std::string&)>& spell)
 {
-  if (dynamic_cast<const mpm::BlowUp*>(&error) != nullptr)
-    return {"blow-up", error.what()};
+  if (const auto* blow_up = dynamic_cast<const BlowUp*>(&error))
+  {
+    const RunFailure& f = blow_up->failure();
+    return {"blow-up", with_spelled_parameters(describe(f), spell),
+            with_spelled_parameters(f.remedy, spell)};
+  }
   if (dynamic_cast<const dealii::ExceptionBase*>(&error) != nullptr)
   {
     const std::string text = error.what();
     std::string message = paragraph_after(text, "Additional information:");
     if (message.empty())
       message = "violated condition: " + paragraph_after(text, "The violated condition was:");
-    return {"FE solver failure", message};
+    return {"FE solver failure", message, {}};
   }
-  return {"breakdown", error.what()};
+  return {"breakdown", error.what(), {}};
 }
 } // namespace vulnus::simulator

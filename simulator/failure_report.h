@@ -4,6 +4,7 @@
 #pragma once
 
 #include <exception>
+#include <functional>
 #include <string>
 
 namespace vulnus::simulator
@@ -11,8 +12,11 @@ namespace vulnus::simulator
 struct FailureReport
 {
   std::string kind;    ///< "blow-up", "FE solver failure" or "breakdown"
-  std::string message; ///< one paragraph
+  std::string message; ///< one paragraph: what happened, where, and the likely cause
+  std::string remedy;  ///< the failure's own remedy, "" when it names none
 };
 
-FailureReport describe_failure(const std::exception& error);
+/// The report of `error`; a blow-up's parameters are spelled by `spell` (the deck's entries).
+FailureReport describe_failure(const std::exception& error,
+                               const std::function<std::string(const std::string&)>& spell);
 } // namespace vulnus::simulator

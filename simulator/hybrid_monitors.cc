@@ -97,7 +97,10 @@ std::vector<std::string> HybridMonitors::check(const coupling::HybridSolver& sol
     std::ostringstream what;
     what << r.name << " = " << r.value << ", beyond " << r.bound << ": " << r.meaning;
     if (&r == &readings[failed_fe_points] && solver.scene().hybrid.stop_when_fe_points_fail)
-      throw mpm::BlowUp(what.str() + " (stopped by Hybrid/Stop when FE points fail = true)");
+      throw BlowUp(RunFailure{what.str() + " (stopped by Hybrid/Stop when FE points fail = true)",
+                              "the wound reached the far field",
+                              "enlarge Hybrid/Zone min and Zone max so the wound stays in the "
+                              "MPM zone"});
     std::ostringstream o;
     o << "*** at step " << solver.mpm().step_count() << " (t = " << solver.time() << " s) "
       << what.str();

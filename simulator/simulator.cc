@@ -1,6 +1,7 @@
 // The time loop: start or restart, step, record, stop on signals or failures, summarise.
 #include "simulator/simulator.h"
 
+#include "deck/scene_entries.h"
 #include "mpm/rank_group.h"
 #include "mpm/solver.h"
 #include "io/summary_json.h"
@@ -111,14 +112,15 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
     }
   };
   auto report_failure = [&](const std::exception& e) {
-    const FailureReport report = describe_failure(e);
+    const FailureReport report = describe_failure(e, deck::entry_of_scene_parameter);
     std::ostringstream o;
     o << report.kind << " at step " << stepper.step_count() << " (t = " << stepper.time()
       << " s): " << report.message;
     totals.completed = false;
     totals.error = o.str();
     directory.warn(o.str());
-    directory.warn("likely remedy: " + stepper.blow_up_remedy());
+    directory.warn("likely remedy: " +
+                   (report.remedy.empty() ? stepper.blow_up_remedy() : report.remedy));
     directory.warn("the last good state is " + last_good_state());
   };
 

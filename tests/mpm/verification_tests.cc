@@ -314,6 +314,11 @@ TEST(MpmVerification, ARigidBodyReachingAFixedFaceStopsTheRun)
   mpm::Solver solver(scene);
   const std::string message = test::run_until_blow_up(solver);
   EXPECT_NE(message.find("rigid body 'ball' reached the fixed x+ face"), std::string::npos) << message;
+  // The cause and a remedy of its own (so the run type's generic one is not added), citing
+  // the face's support by the solver's parameter name.
+  EXPECT_NE(message.find("likely cause: a projectile aimed at a constrained face"), std::string::npos)
+    << message;
+  EXPECT_NE(message.find("make that face free (domain_faces.x+)"), std::string::npos) << message;
   // Its leading point crossed x = 12 mm within the last step: about (12 - 8) mm / 50 m/s.
   EXPECT_NEAR(solver.time(), 4e-3 / 50.0, 2 * solver.last_time_step() + 0.5e-3 / 50.0);
 }
