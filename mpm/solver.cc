@@ -318,7 +318,8 @@ void Solver::advance(const double cap)
     throw BlowUp(RunFailure{problem.str(),
                             "a point moving or vibrating far too fast (a CFL number too high, a "
                             "bulk modulus too large for the cell size, or an unstable contact)",
-                            "a smaller {cfl}, or check the bulk modulus and the contact settings"});
+                            "a smaller {cfl} (or {min_time_step}, when it lies above the scene's "
+                            "stable step), or check the bulk modulus and the contact settings"});
   }
   time_step = std::min({stable, parameters.end_time - current_time, cap});
   if (time_step <= 0.0)

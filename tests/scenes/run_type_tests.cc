@@ -112,7 +112,7 @@ TEST_P(EveryRunType, ReportsAFailedStepWithItsPlaceRemedyAndLastGoodState)
   // The MPM sides' collapsed step names its own remedy, spelled as deck entries; the FE
   // breakdown has no specific one and gets the run type's generic remedy.
   EXPECT_NE(r.err.find(type.name == "fe" ? "likely remedy: a smaller Far field/CFL"
-                                         : "likely remedy: a smaller Time/CFL, or check"),
+                                         : "likely remedy: a smaller Time/CFL (or Time/Minimum"),
             std::string::npos)
     << r.err;
   EXPECT_EQ(r.err.find('{'), std::string::npos) << r.err;
