@@ -1,0 +1,80 @@
+"""What the convergence benchmarks share: the paper decks, the wound figures read from a
+run's summary.json, and running vulnus once per case (a completed run is reused)."""
+import json
+import os
+import shlex
+import subprocess
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
+VULNUS = os.environ.get("VULNUS", os.path.join(ROOT, "build", "app", "vulnus"))
+PAPER = os.path.join(ROOT, "inputs", "paper")
+SCENES = ["anisotropic_150ms", "anisotropic_50ms", "isotropic_150ms", "isotropic_50ms"]
+
+
+def mean(values):
+    return sum(values) / len(values) if values else None
+
+
+FIGURES = [
+    ("vol_matrix", lambda s: s["failed_volume_m3"]["matrix"]),
+    ("vol_fiber", lambda s: s["failed_volume_m3"]["fiber"]),
+    ("vol_total", lambda s: s["failed_volume_m3"]["total"]),
+    ("entrance_d", lambda s: s["entrance_wound"]["equivalent_diameter_m"]),
+    ("exit_d", lambda s: s["exit_wound"]["equivalent_diameter_m"]),
+    ("exit_aspect", lambda s: s["exit_wound"]["aspect_ratio"]),
+    ("tract_area", lambda s: mean(s["tract"]["area_m2"])),
+    ("exit_velocity", lambda s: s["bullet"]["exit_velocity_m_s"]),
+]
+# A failed volume below this fraction of the total (the fiber-only remainder; none in the
+# isotropic slabs) is measured against the total failed volume, not against itself.
+SMALL_VOLUME_FRACTION = 0.01
+
+
+def value(summary, getter):
+    try:
+        v = getter(summary)
+        return None if v is None else float(v)
+    except (KeyError, TypeError):
+        return None
+
+
+def relative(a, b, scale):
+    if a is None or b is None or scale == 0:
+        return float("nan")
+    return abs(a - b) / abs(scale)
+
+
+def scale_of(figure, reference, total):
+    """What a change of `figure` is measured against: its reference value, or the total failed
+    volume for a failed volume that is a tiny part of it."""
+    scale = reference if reference else 1.0
+    if figure.startswith("vol_") and abs(reference or 0) < SMALL_VOLUME_FRACTION * total:
+        scale = total
+    return scale
+
+
+def completed_summary(directory):
+    path = os.path.join(directory, "summary.json")
+    if not os.path.isfile(path):
+        return None
+    with open(path, encoding="utf-8") as f:
+        summary = json.load(f)
+    return summary if summary.get("completed") else None
+
+
+def run_once(deck, directory, settings):
+    """Runs `vulnus run deck` with the --set entries into `directory` unless a completed run
+    is there; returns its summary, or None when it did not complete."""
+    summary = completed_summary(directory)
+    if summary:
+        return summary
+    subprocess.run(["rm", "-rf", directory], check=True)
+    command = [VULNUS, "run", deck, "--output", directory]
+    for entry in settings:
+        command += ["--set", entry]
+    print("$ " + shlex.join(command), flush=True)
+    start = time.time()
+    status = subprocess.run(command, stdout=subprocess.DEVNULL, check=False).returncode
+    print("  exit status %d, %.0f s" % (status, time.time() - start), flush=True)
+    return completed_summary(directory)
