@@ -24,6 +24,12 @@ void declare_time_section(EntryTable& table)
                 "whose impedance rho c is at least 10 times every other deformable body's; a "
                 "softer one steps with the scene. false: the whole scene steps at the "
                 "projectile's wave speed and contact treats it like the target.");
+  table.declare("Projectile CFL", "0.4", Patterns::Double(0.0, 1.0),
+                "Courant number of a subcycled projectile's substeps, h / max(c + |v|) times "
+                "it, in [0, 1]; 0 uses Time/CFL. The projectile's elastic response enters the "
+                "wound only through the contact, so its substeps may be longer than the "
+                "target's steps need to be (docs/converged_wound.md, \"The projectile's own "
+                "step\").");
   table.declare("Artificial viscosity linear", "0.06", Patterns::Double(0.0),
                 "Linear bulk viscosity coefficient q1 [-] of the shock viscosity q = rho (q1 c h "
                 "|tr D| + q2 h^2 (tr D)^2), acting in compression only (0: off). The default, "
@@ -56,6 +62,7 @@ void parse_time_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   scene.end_time = prm.get_double("End time");
   scene.cfl = prm.get_double("CFL");
   scene.subcycle_projectile = prm.get_bool("Subcycle projectile");
+  scene.projectile_cfl = prm.get_double("Projectile CFL");
   scene.artificial_viscosity_linear = prm.get_double("Artificial viscosity linear");
   scene.artificial_viscosity_quadratic = prm.get_double("Artificial viscosity quadratic");
   scene.max_time_step = prm.get_double("Maximum time step");

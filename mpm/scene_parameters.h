@@ -83,6 +83,10 @@ struct SceneParameters : scene::SceneDescription
   /// step, which then follows the other bodies' wave speeds (contact is resolved once per
   /// scene step, with the projectile as the contact leader: see mpm/projectile_subcycle.h).
   bool subcycle_projectile = true;
+  /// The subcycled projectile's substeps are h / max(c + |v|) times this (0: cfl). Its
+  /// elastic response reaches the wound only through the contact, so 0.4 changes no wound
+  /// figure by more than a halving of the scene's step does (docs/converged_wound.md).
+  double projectile_cfl = 0.4;
   DeformationUpdate deformation_update = DeformationUpdate::midpoint;
   double artificial_viscosity_linear = 0.0;    ///< bulk viscosity coefficients (0 = off)
   double artificial_viscosity_quadratic = 0.0;

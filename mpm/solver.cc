@@ -336,7 +336,9 @@ void Solver::advance(const double cap)
   relax_projectile_velocities(dt, signal_speed);
   if (subcycle)
   {
-    const double own_step = parameters.cfl * parameters.cell_size / signal_speed[projectile_body];
+    const double cfl =
+      parameters.projectile_cfl > 0.0 ? parameters.projectile_cfl : parameters.cfl;
+    const double own_step = cfl * parameters.cell_size / signal_speed[projectile_body];
     n_projectile_substeps = std::max(1, static_cast<int>(std::ceil(dt / own_step * (1.0 - 1e-12))));
   }
   lap(timings.time_step);

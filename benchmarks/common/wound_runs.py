@@ -65,13 +65,14 @@ def completed_summary(directory):
 
 def run_once(deck, directory, settings):
     """Runs `vulnus run deck` with the --set entries into `directory` unless a completed run
-    is there; returns its summary, or None when it did not complete."""
+    is there; returns its summary, or None when it did not complete. No particle series is
+    written (the figures are in summary.json) unless the settings ask for one."""
     summary = completed_summary(directory)
     if summary:
         return summary
     subprocess.run(["rm", "-rf", directory], check=True)
     command = [VULNUS, "run", deck, "--output", directory]
-    for entry in settings:
+    for entry in ["Output/Particle output interval=0"] + list(settings):
         command += ["--set", entry]
     print("$ " + shlex.join(command), flush=True)
     start = time.time()
