@@ -184,7 +184,7 @@ void check_failure_regularization(const mpm::SceneParameters& scene, Checker& ch
   {
     const materials::FailureParameters& failure = material.parameters.tissue.failure;
     const bool tissue = material.parameters.model.find("hyperelastic") != std::string::npos;
-    if (!tissue || !failure.enabled || !(failure.regularization_length > 0.0))
+    if (!tissue)
       continue;
     const std::string entry = "Material " + material.name + "/" +
                               model_subsection(material.parameters.model) +

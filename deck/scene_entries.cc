@@ -9,6 +9,7 @@ std::string entry_of_scene_parameter(const std::string& name)
 {
   static const std::map<std::string, std::string> entries = {
     {"cfl", "Time/CFL"},
+    {"projectile_cfl", "Time/Projectile CFL"},
     {"min_time_step", "Time/Minimum time step"},
     {"max_time_step", "Time/Maximum time step"},
     {"end_time", "Time/End time"},

@@ -5,7 +5,7 @@
 #include "mpm/body_builder.h"
 #include "mpm/nonlocal_failure.h"
 #include "materials/material_parameters.h"
-#include "mpm/point_transfer.h"
+#include "mpm/projectile_gather.h"
 
 #include <algorithm>
 #include <cmath>
@@ -193,25 +193,10 @@ void Solver::advance_projectile_substeps(const double dt)
   std::size_t first_of_mine = 0;
   if (ranks.distributed())
   {
-    // Every rank takes every rank's share, in rank order, with its forces.
-    const std::vector<std::vector<char>> point_messages =
-      ranks.exchange_with_all(std::vector<std::vector<char>>(ranks.size(), to_bytes(projectile)));
-    const char* force_bytes = reinterpret_cast<const char*>(force.data());
-    const std::vector<std::vector<char>> force_messages = ranks.exchange_with_all(
-      std::vector<std::vector<char>>(ranks.size(), std::vector<char>(force_bytes, force_bytes + force.size() * sizeof(Vector3))));
-    std::vector<Particles> parts;
-    force.clear();
-    for (int r = 0; r < ranks.size(); ++r)
-    {
-      parts.push_back(from_bytes(point_messages[r].data(), point_messages[r].size()));
-      if (r < ranks.rank())
-        first_of_mine += parts.back().size();
-      const Vector3* f = reinterpret_cast<const Vector3*>(force_messages[r].data());
-      force.insert(force.end(), f, f + force_messages[r].size() / sizeof(Vector3));
-    }
-    Particles none;
-    none.body_begin.assign(2, 0);
-    projectile = merge_points(none, {}, parts);
+    GatheredProjectile all = gather_on_every_rank(ranks, projectile, force);
+    projectile = std::move(all.points);
+    force = std::move(all.force);
+    first_of_mine = all.first_of_mine;
   }
   const std::size_t n_mine = particles.end_of(b) - particles.begin_of(b);
   const SubcycleResult result =
@@ -669,19 +654,24 @@ RunFailure Solver::state_problem() const
     return {};
   const Vector3& x = particles.position[bad];
   const double J = particles.deformation_gradient[bad].determinant();
+  // The subcycled projectile's points step at their own Courant number.
+  const bool in_substeps = subcycle && bad >= static_cast<long>(particles.begin_of(projectile_body)) &&
+                           bad < static_cast<long>(particles.end_of(projectile_body));
+  const std::string smaller_step =
+    in_substeps ? "a smaller {projectile_cfl} (or {cfl} if it is 0)" : "a smaller {cfl}";
   std::string what, cause, remedy;
   if (!(x.allFinite() && particles.velocity[bad].allFinite() && particles.stress[bad].allFinite()))
   {
     what = "NaN or Inf in position, velocity or stress";
     cause = "an unstable step";
-    remedy = "a smaller {cfl}, or check the bulk modulus and the contact settings";
+    remedy = smaller_step + ", or check the bulk modulus and the contact settings";
   }
   else if (!(J > 0.0))
   {
     what = "inverted deformation (J = " + std::to_string(J) + ")";
     cause = "excessive compression in one step";
-    remedy = "a smaller {cfl}, a larger bulk modulus, or more shock viscosity "
-             "({artificial_viscosity_linear}, {artificial_viscosity_quadratic})";
+    remedy = smaller_step + ", a larger bulk modulus, or more shock viscosity "
+                            "({artificial_viscosity_linear}, {artificial_viscosity_quadratic})";
   }
   else
   {

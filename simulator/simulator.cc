@@ -116,11 +116,11 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
     std::ostringstream o;
     o << report.kind << " at step " << stepper.step_count() << " (t = " << stepper.time()
       << " s): " << report.message;
+    const std::string remedy = report.remedy.empty() ? stepper.blow_up_remedy() : report.remedy;
     totals.completed = false;
-    totals.error = o.str();
+    totals.error = o.str() + "; likely remedy: " + remedy;
     directory.warn(o.str());
-    directory.warn("likely remedy: " +
-                   (report.remedy.empty() ? stepper.blow_up_remedy() : report.remedy));
+    directory.warn("likely remedy: " + remedy);
     directory.warn("the last good state is " + last_good_state());
   };
 
