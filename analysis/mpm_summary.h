@@ -21,7 +21,7 @@ struct RunTotals
   bool completed = true;
   std::string error; ///< blow-up message when not completed
   std::vector<std::string> warnings;
-  std::uint64_t mpi_bytes_sent = 0; ///< over all ranks
+  std::uint64_t mpi_bytes_sent = 0; ///< over all ranks, by this process (a restart counts anew)
 };
 
 /// Total energy accounted for (J): kinetic + strain + potential + dissipated in the materials,

@@ -180,7 +180,8 @@ std::string HybridStepper::final_report(const nlohmann::json& summary) const
     << ledger.fe_steps << " FE steps to t = " << solver.time() << " s in "
     << summary["wall_seconds"].get<double>() << " s wall (MPM "
     << summary["hybrid"]["mpm_seconds"].get<double>() << " s, FE and coupling "
-    << mpm_side.phase_times().coupling << " s); energy balance error "
+    << mpm_side.phase_times().coupling << " s; MPM phases (s): "
+    << phase_report(mpm_side.phase_times()) << ")\nenergy balance error "
     << summary["energy"]["balance_error"].get<double>() << ", interface energy error "
     << ledger.energy_error() << " J; failed points: matrix " << summary["failed"]["matrix"]
     << ", fiber " << summary["failed"]["fiber"] << ", total " << summary["failed"]["total"];

@@ -169,20 +169,26 @@ nlohmann::json MpmStepper::summary(const analysis::RunTotals& run) const
 
 std::string MpmStepper::final_report(const nlohmann::json& summary) const
 {
-  const mpm::PhaseTimes& t = solver.phase_times();
   std::ostringstream o;
   o << std::setprecision(4) << "done: " << solver.step_count() << " steps to t = " << solver.time()
     << " s in " << summary["wall_seconds"].get<double>() << " s wall, "
     << summary["particle_steps_per_second"].get<double>() << " point-steps/s; phases (s): "
-    << "time step " << t.time_step << ", particle-to-grid " << t.particle_to_grid
-    << ", grid update " << t.grid_update << ", contact " << t.contact << ", grid-to-particle "
-    << t.grid_to_particle << ", stress " << t.stress_update << ", checks " << t.checks_and_sorting
-    << "\n";
+    << phase_report(solver.phase_times()) << "\n";
   o << "energy balance error " << summary["energy"]["balance_error"].get<double>()
     << "; failed points: matrix " << summary["failed"]["matrix"] << ", fiber "
     << summary["failed"]["fiber"] << ", total " << summary["failed"]["total"];
   if (solver.projectile() >= 0)
     o << bullet_report(summary);
+  return o.str();
+}
+
+std::string phase_report(const mpm::PhaseTimes& t)
+{
+  std::ostringstream o;
+  o << std::setprecision(4) << "time step " << t.time_step << ", particle-to-grid "
+    << t.particle_to_grid << ", grid update " << t.grid_update << ", contact " << t.contact
+    << ", grid-to-particle " << t.grid_to_particle << ", stress " << t.stress_update
+    << ", checks " << t.checks_and_sorting;
   return o.str();
 }
 

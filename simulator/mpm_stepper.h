@@ -25,6 +25,9 @@ std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver);
 /// has not left the target.
 std::string bullet_report(const nlohmann::json& summary);
 
+/// "time step .., particle-to-grid .., ..., checks .." (s): where an MPM solver's time went.
+std::string phase_report(const mpm::PhaseTimes& times);
+
 class MpmStepper : public Stepper
 {
 public:

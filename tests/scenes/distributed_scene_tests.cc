@@ -2,14 +2,18 @@
 // bullet, first 60 microseconds) and hybrid (rigid bullet, to the bullet's exit): the same
 // wound and bullet figures as one process (without the shock viscosity, closely; at the
 // defaults, within the answer's own round-off spread), one particle file per output time holding every
-// point, one XDMF series, and a clear refusal when the grid is too thin for the rank count.
+// point, one XDMF series, a clear refusal when the grid is too thin for the rank count, and a
+// two-rank hybrid run restarted from a mid-run checkpoint that ends as the uninterrupted run.
 #include "../app/command_runner.h"
+#include "run_comparison.h"
 
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <regex>
 
 namespace
@@ -190,4 +194,59 @@ TEST(DistributedPaperScene, TooManyRanksForTheGridIsRefused)
     "'Grid/Cell size=0.005' --output thin_hybrid", scratch.path);
   EXPECT_NE(hybrid.exit_status, 0);
   EXPECT_NE((hybrid.out + hybrid.err).find("per rank"), std::string::npos) << hybrid.out << hybrid.err;
+}
+
+// A two-rank hybrid run restarted from its second checkpoint (every rank's own file) ends with
+// the uninterrupted run's summary, history and outputs, to the bit. The copy it restarts in
+// loses everything written after that checkpoint (later checkpoints, particle files and the
+// summary), and its history gets a stray last row the restart must cut.
+TEST(DistributedPaperScene, HybridOnTwoRanksRestartsBitForBit)
+{
+  ScratchDirectory scratch("distributed_restart");
+  const std::string scene = hybrid_deck +
+                            " --set 'Time/End time=1e-4' --set 'Output/Particle output interval=2e-5'"
+                            " --set 'Output/Checkpoint step interval=5' --set 'Output/Checkpoints kept=1000'";
+  const CommandResult reference = run_on_ranks(2, scene + " --output reference", scratch.path);
+  ASSERT_EQ(reference.exit_status, 0) << reference.err;
+
+  const fs::path run = scratch.path / "restarted";
+  fs::copy(scratch.path / "reference", run, fs::copy_options::recursive);
+  for (const char* rank : {"rank_0", "rank_1"})
+  {
+    std::vector<fs::path> checkpoints;
+    for (const auto& entry : fs::directory_iterator(run / "checkpoints" / rank))
+      checkpoints.push_back(entry.path());
+    std::sort(checkpoints.begin(), checkpoints.end());
+    ASSERT_GE(checkpoints.size(), 3u) << rank;
+    for (std::size_t k = 2; k < checkpoints.size(); ++k)
+      fs::remove(checkpoints[k]);
+  }
+  std::size_t n_particle_files = 0;
+  for (const auto& entry : fs::directory_iterator(run))
+    if (entry.path().extension() == ".h5" && entry.path().filename().string().rfind("particles_", 0) == 0 &&
+        entry.path().filename() != "particles_00000.h5")
+    {
+      fs::remove(entry.path());
+      ++n_particle_files;
+    }
+  ASSERT_GT(n_particle_files, 0u);
+  fs::remove(run / "summary.json");
+  std::ofstream(run / "history.csv", std::ios::app) << "stray row of a killed run\n";
+
+  const CommandResult restarted = run_on_ranks(2, scene + " --restart restarted", scratch.path);
+  ASSERT_EQ(restarted.exit_status, 0) << restarted.err;
+  EXPECT_NE(restarted.out.find("restarted from"), std::string::npos) << restarted.out;
+  EXPECT_EQ(summary_without_timing(scratch.path / "reference"), summary_without_timing(run));
+  for (const auto& entry : fs::directory_iterator(scratch.path / "reference"))
+  {
+    const std::string name = entry.path().filename().string();
+    const std::string extension = entry.path().extension().string();
+    if (extension == ".csv" || extension == ".xdmf")
+      EXPECT_TRUE(read_text(entry.path()) == read_text(run / name)) << name << " differs";
+    else if (extension == ".h5")
+    {
+      ASSERT_TRUE(fs::exists(run / name)) << name;
+      expect_same_datasets(entry.path(), run / name);
+    }
+  }
 }

@@ -3,6 +3,7 @@
 // `--restart` ends bit for bit like the uninterrupted run on the same thread count; a
 // half-written newest checkpoint is skipped; a deck that changed the physics is refused.
 #include "../app/command_runner.h"
+#include "run_comparison.h"
 
 #include <nlohmann/json.hpp>
 
@@ -62,31 +63,7 @@ void interrupt_after_first_checkpoint(const fs::path& scratch, const std::string
   exit_status = wait_for(pid, killed_by);
 }
 
-std::vector<double> dataset(const fs::path& file, const std::string& name)
-{
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  EXPECT_GE(f, 0) << file;
-  const hid_t set = H5Dopen2(f, name.c_str(), H5P_DEFAULT);
-  const hid_t space = H5Dget_space(set);
-  const hssize_t n = H5Sget_simple_extent_npoints(space);
-  std::vector<double> values(static_cast<std::size_t>(std::max<hssize_t>(n, 0)));
-  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
-  H5Sclose(space);
-  H5Dclose(set);
-  H5Fclose(f);
-  return values;
-}
 
-nlohmann::json summary_without_timing(const fs::path& run)
-{
-  nlohmann::json s = nlohmann::json::parse(read_text(run / "summary.json"));
-  s.erase("wall_seconds");
-  s.erase("particle_steps_per_second");
-  if (s.contains("hybrid"))
-    for (const char* key : {"mpm_seconds", "coupling_and_fe_seconds"})
-      s["hybrid"].erase(key);
-  return s;
-}
 
 /// Same summary, history and final particle state, to the bit.
 void expect_identical_runs(const fs::path& reference, const fs::path& restarted)
@@ -94,10 +71,14 @@ void expect_identical_runs(const fs::path& reference, const fs::path& restarted)
   EXPECT_EQ(summary_without_timing(reference), summary_without_timing(restarted));
   EXPECT_EQ(read_text(reference / "history.csv"), read_text(restarted / "history.csv"));
   EXPECT_EQ(read_text(reference / "particles.xdmf"), read_text(restarted / "particles.xdmf"));
-  for (const char* field : {"positions", "velocity", "deformation_gradient"})
-    EXPECT_EQ(dataset(reference / "particles_00005.h5", field),
-              dataset(restarted / "particles_00005.h5", field))
-      << field;
+  // The state the checkpoint carries: positions, velocities, the stress (from F and the
+  // failure state), the displacement and the failure flags.
+  for (const char* field : {"positions", "velocity", "stress", "displacement", "failure"})
+  {
+    const std::vector<double> expected = dataset(reference / "particles_00005.h5", field);
+    EXPECT_FALSE(expected.empty()) << field;
+    EXPECT_EQ(expected, dataset(restarted / "particles_00005.h5", field)) << field;
+  }
 }
 
 class Restart : public ::testing::Test
@@ -221,6 +202,35 @@ TEST(HybridRestart, KilledRunContinuesBitForBit)
   EXPECT_EQ(read_text(scratch.path / "reference" / "fe_mesh.xdmf"),
             read_text(scratch.path / "killed" / "fe_mesh.xdmf"));
 }
+
+// The same with an implicit far field: Newmark's and generalized alpha's vectors (displacement,
+// velocity, acceleration, the previous step's forces) and the factorized operator's inputs are
+// restored, so the restart follows the uninterrupted run to the last bit.
+class HybridImplicitRestart : public ::testing::TestWithParam<const char*>
+{
+};
+
+std::string implicit_arguments(const std::string& extra)
+{
+  return hybrid_arguments("--set 'Far field/Integrator=" +
+                          std::string(HybridImplicitRestart::GetParam()) + "' " + extra);
+}
+
+TEST_P(HybridImplicitRestart, KilledRunContinuesBitForBit)
+{
+  ScratchDirectory scratch("hybrid_implicit_restart");
+  const CommandResult r = reference_then_killed_and_restarted(scratch.path, implicit_arguments);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.out.find("restarted from"), std::string::npos);
+  expect_identical_runs(scratch.path / "reference", scratch.path / "killed");
+  EXPECT_EQ(read_text(scratch.path / "reference" / "fe_mesh.xdmf"),
+            read_text(scratch.path / "killed" / "fe_mesh.xdmf"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, HybridImplicitRestart,
+                         ::testing::Values("Newmark", "generalized alpha"),
+                         [](const auto& info)
+                         { return std::string(info.param[0] == 'N' ? "newmark" : "generalized_alpha"); });
 
 /// The pure-FE pulse deck with a checkpoint every 5 steps.
 std::string fe_arguments(const std::string& extra = "")
