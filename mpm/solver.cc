@@ -382,7 +382,11 @@ void Solver::advance(const double cap)
     decide_nonlocal_failures(materials_of_body, particles);
   update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
   if (subcycle)
+  {
+    lap(timings.stress_update);
     advance_projectile_substeps(dt);
+    lap(timings.projectile_substeps);
+  }
   std::vector<double> yield_ratio = stress_result.max_von_mises_over_yield;
   ranks.max(yield_ratio.data(), static_cast<int>(yield_ratio.size()));
   for (std::size_t b = 0; b < peak_yield_ratio.size(); ++b)

@@ -46,12 +46,13 @@ struct PhaseTimes
   double contact = 0.0;     ///< the contact pass (nodes where bodies meet)
   double grid_to_particle = 0.0;
   double stress_update = 0.0;
+  double projectile_substeps = 0.0; ///< a subcycled projectile's own steps
   double checks_and_sorting = 0.0;
   double coupling = 0.0; ///< the partner's exchange, including its own step
   double total() const
   {
     return time_step + particle_to_grid + grid_update + contact + grid_to_particle + stress_update +
-           checks_and_sorting + coupling;
+           projectile_substeps + checks_and_sorting + coupling;
   }
 };
 

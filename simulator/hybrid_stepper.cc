@@ -186,7 +186,10 @@ std::string HybridStepper::final_report(const nlohmann::json& summary) const
     << ledger.energy_error() << " J; failed points: matrix " << summary["failed"]["matrix"]
     << ", fiber " << summary["failed"]["fiber"] << ", total " << summary["failed"]["total"];
   if (mpm_side.projectile() >= 0)
+  {
     o << bullet_report(summary);
+    o << projectile_note(mpm_side, summary);
+  }
   return o.str();
 }
 } // namespace vulnus::simulator

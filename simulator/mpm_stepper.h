@@ -21,12 +21,22 @@ ProjectileStart projectile_start(const mpm::Solver& solver);
 /// The MPM-side warnings of a finished run: a projectile far below yield, points removed.
 std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver);
 
+/// elastic_projectile_note for a finished run ("\n" + note, or empty).
+std::string projectile_note(const mpm::Solver& solver, const nlohmann::json& summary);
+
 /// The closing line's bullet part, from summary.json's "bullet": its exit velocity, or that it
 /// has not left the target.
 std::string bullet_report(const nlohmann::json& summary);
 
 /// "time step .., particle-to-grid .., ..., checks .." (s): where an MPM solver's time went.
 std::string phase_report(const mpm::PhaseTimes& times);
+
+/// A closing note when a deformable projectile stayed elastic (peak von Mises below 0.1 of its
+/// yield stress) while its own substeps took more than half of the run: the rigid model would
+/// spare them. Empty otherwise.
+std::string elastic_projectile_note(double substep_seconds, double run_seconds,
+                                    double peak_von_mises_over_yield,
+                                    const std::string& projectile_material);
 
 class MpmStepper : public Stepper
 {
