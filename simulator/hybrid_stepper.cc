@@ -188,7 +188,7 @@ std::string HybridStepper::final_report(const nlohmann::json& summary) const
   if (mpm_side.projectile() >= 0)
   {
     o << bullet_report(summary);
-    o << projectile_note(mpm_side, summary);
+    o << projectile_note(mpm_side);
   }
   return o.str();
 }

@@ -180,7 +180,7 @@ std::string MpmStepper::final_report(const nlohmann::json& summary) const
   if (solver.projectile() >= 0)
   {
     o << bullet_report(summary);
-    o << projectile_note(solver, summary);
+    o << projectile_note(solver);
   }
   return o.str();
 }
@@ -214,16 +214,16 @@ std::string elastic_projectile_note(const double substep_seconds, const double r
   return o.str();
 }
 
-std::string projectile_note(const mpm::Solver& solver, const nlohmann::json& summary)
+std::string projectile_note(const mpm::Solver& solver)
 {
   const int b = solver.projectile();
-  if (b < 0 || !summary.contains("bullet") ||
-      !summary["bullet"].contains("max_von_mises_over_yield"))
+  if (b < 0)
     return {};
-  const std::string note = elastic_projectile_note(
-    solver.phase_times().projectile_substeps, solver.phase_times().total(),
-    summary["bullet"]["max_von_mises_over_yield"].get<double>(),
-    solver.scene().bodies[static_cast<std::size_t>(b)].material);
+  const auto body = static_cast<std::size_t>(b);
+  const std::string note =
+    elastic_projectile_note(solver.phase_times().projectile_substeps, solver.phase_times().total(),
+                            solver.peak_von_mises_over_yield()[body],
+                            solver.scene().bodies[body].material);
   return note.empty() ? note : "\n" + note;
 }
 

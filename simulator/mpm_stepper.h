@@ -22,7 +22,7 @@ ProjectileStart projectile_start(const mpm::Solver& solver);
 std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver);
 
 /// elastic_projectile_note for a finished run ("\n" + note, or empty).
-std::string projectile_note(const mpm::Solver& solver, const nlohmann::json& summary);
+std::string projectile_note(const mpm::Solver& solver);
 
 /// The closing line's bullet part, from summary.json's "bullet": its exit velocity, or that it
 /// has not left the target.

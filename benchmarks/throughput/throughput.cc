@@ -102,7 +102,8 @@ void print_row(const char* label, const Measurement& m, const bool first)
   std::printf("%-16s %8.2f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8s\n", label,
               m.point_steps_per_second / 1e6, per * p.particle_to_grid, per * p.grid_update,
               per * p.contact, per * p.grid_to_particle,
-              per * (p.stress_update + p.projectile_substeps), per * (p.time_step + p.checks_and_sorting), per * p.total(),
+              per * (p.stress_update + p.projectile_substeps),
+              per * (p.time_step + p.checks_and_sorting), per * p.total(),
               first ? std::to_string(int(m.resident_bytes_per_point)).c_str() : "-");
 }
 /// The same scene with one material change, linear, 2 threads.

@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <chrono>
@@ -63,8 +62,6 @@ void interrupt_after_first_checkpoint(const fs::path& scratch, const std::string
   kill(pid, signal);
   exit_status = wait_for(pid, killed_by);
 }
-
-
 
 /// Same summary, history and final particle state, to the bit.
 void expect_identical_runs(const fs::path& reference, const fs::path& restarted)
