@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -81,7 +82,81 @@ void check_bullet_path(const mpm::SceneParameters& scene, const mpm::BodyParamet
     }
   }
 }
+/// The grid node at or beyond x, outwards (down for a lower bound), within [lo, hi].
+double node_outwards(const double x, const double origin, const double h, const bool lower,
+                     const double lo, const double hi)
+{
+  const double cells = (x - origin) / h;
+  double node = origin + h * (lower ? std::floor(cells + 1e-9) : std::ceil(cells - 1e-9));
+  if (node < lo - 1e-9 * h)
+    node += h;
+  if (node > hi + 1e-9 * h)
+    node -= h;
+  return node;
+}
+
+/// Start and direction of the projectile's flight; false without a projectile.
+bool flight_line(const mpm::SceneParameters& scene, mpm::Vector3& start, mpm::Vector3& direction,
+                 double& reach)
+{
+  for (const mpm::BodyParameters& body : scene.bodies)
+  {
+    if (!body.is_projectile)
+      continue;
+    reach = (body.shape == mpm::BodyShape::box ? 0.5 * (body.box_max - body.box_min).norm()
+                                               : body.radius) +
+            scene.cell_size;
+    start = body.shape == mpm::BodyShape::box ? mpm::Vector3(0.5 * (body.box_min + body.box_max))
+                                              : body.center;
+    direction = body.initial_velocity;
+    if (direction.norm() == 0.0)
+      direction = body.axis;
+    direction.normalize();
+    return true;
+  }
+  return false;
+}
 } // namespace
+
+HybridParameters resolve_zone(const mpm::SceneParameters& scene, const HybridParameters& hybrid)
+{
+  HybridParameters resolved = hybrid;
+  const int index = split_body_index(scene, hybrid);
+  mpm::Vector3 start, direction;
+  double reach = 0.0;
+  if (hybrid.zone_start != ZoneStart::around_path || index < 0 ||
+      !flight_line(scene, start, direction, reach))
+    return resolved;
+  const mpm::BodyParameters& slab = scene.bodies[static_cast<std::size_t>(index)];
+  reach += hybrid.path_margin;
+  mpm::Vector3 lo = mpm::Vector3::Constant(std::numeric_limits<double>::max());
+  mpm::Vector3 hi = -lo;
+  const double span = (slab.box_max - slab.box_min).norm() + (start - slab.box_min).norm() +
+                      (start - slab.box_max).norm();
+  const int n_samples = 4000;
+  for (int i = 0; i <= n_samples; ++i)
+  {
+    const mpm::Vector3 c = start + (span * i / n_samples) * direction;
+    bool near_slab = true;
+    for (int d = 0; d < 3; ++d)
+      near_slab = near_slab && c[d] >= slab.box_min[d] - reach && c[d] <= slab.box_max[d] + reach;
+    if (!near_slab)
+      continue;
+    lo = lo.cwiseMin(c - mpm::Vector3::Constant(reach));
+    hi = hi.cwiseMax(c + mpm::Vector3::Constant(reach));
+  }
+  if (lo[0] > hi[0])
+    return resolved; // the path misses the body: check_decomposition reports it
+  const double h = scene.cell_size;
+  for (int d = 0; d < 3; ++d)
+  {
+    const double a = std::max(lo[d], slab.box_min[d]);
+    const double b = std::min(hi[d], slab.box_max[d]);
+    resolved.zone_min[d] = node_outwards(a, scene.domain_min[d], h, true, slab.box_min[d], slab.box_max[d]);
+    resolved.zone_max[d] = node_outwards(b, scene.domain_min[d], h, false, slab.box_min[d], slab.box_max[d]);
+  }
+  return resolved;
+}
 
 int split_body_index(const mpm::SceneParameters& scene, const HybridParameters& hybrid)
 {
@@ -106,10 +181,20 @@ int split_body_index(const mpm::SceneParameters& scene, const HybridParameters& 
 }
 
 std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& scene,
-                                                  const HybridParameters& hybrid,
+                                                  const HybridParameters& deck_hybrid,
                                                   const fem::FeSceneParameters& far_field)
 {
   std::vector<ParameterProblem> problems;
+  const HybridParameters hybrid = resolve_zone(scene, deck_hybrid);
+  const AdaptiveZoneParameters& adaptive = hybrid.adaptive;
+  if (adaptive.enabled && !(adaptive.threshold > 0.0 && adaptive.threshold <= 1.0))
+    problems.push_back({{"adaptive.threshold"}, "outside (0, 1]",
+                        "a fraction of the failure limits, about 0.5"});
+  if (adaptive.enabled && !(adaptive.reach >= scene.cell_size))
+    problems.push_back({{"adaptive.reach"}, "below one grid cell",
+                        "give how far the zone may grow, in m"});
+  if (hybrid.zone_start == ZoneStart::around_path && !(hybrid.path_margin >= 0.0))
+    problems.push_back({{"path_margin"}, "negative", "give a margin >= 0 m"});
   const int index = split_body_index(scene, hybrid);
   if (index < 0)
   {
@@ -198,10 +283,11 @@ std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& sc
   return problems;
 }
 
-HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters& hybrid,
+HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters& deck_hybrid,
                       const fem::FeSceneParameters& far_field)
 {
-  const std::vector<ParameterProblem> problems = check_decomposition(scene, hybrid, far_field);
+  const std::vector<ParameterProblem> problems = check_decomposition(scene, deck_hybrid, far_field);
+  const HybridParameters hybrid = resolve_zone(scene, deck_hybrid);
   if (!problems.empty())
   {
     std::ostringstream message;
@@ -231,6 +317,24 @@ HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters&
     split.initial_velocity[d] = slab.initial_velocity[d];
   }
   fe.has_hole = true;
+  split.limit_min = fe.hole_min;
+  split.limit_max = fe.hole_max;
+  if (hybrid.adaptive.enabled)
+  {
+    // Whole cells beyond the zone, as far as the reach and the body allow.
+    const double h = scene.cell_size;
+    const double n_reach = std::ceil(hybrid.adaptive.reach / h - 1e-9);
+    for (int d = 0; d < 3; ++d)
+    {
+      const double below = std::floor((zone.box_min[d] - slab.box_min[d]) / h + 1e-9);
+      const double above = std::floor((slab.box_max[d] - zone.box_max[d]) / h + 1e-9);
+      split.limit_min[d] = zone.box_min[d] - h * std::min(n_reach, below);
+      split.limit_max[d] = zone.box_max[d] + h * std::min(n_reach, above);
+    }
+    fe.has_focus = true;
+    fe.focus_min = split.limit_min;
+    fe.focus_max = split.limit_max;
+  }
   fe.interface_condition = fem::InterfaceCondition::velocity_driven;
   fe.staggered_velocity = fe.integrator == fem::TimeIntegrator::central_difference;
   return split;

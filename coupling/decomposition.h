@@ -20,8 +20,18 @@ struct HybridScene
   fem::FeSceneParameters fe;   ///< the split body minus the zone
   std::size_t coupled_body = 0; ///< index of the split body in mpm.bodies
   std::array<double, 3> initial_velocity{{0.0, 0.0, 0.0}}; ///< of the split body, m/s
-  HybridParameters hybrid;
+  HybridParameters hybrid; ///< with the zone resolved (a zone around the path computed)
+  /// Adaptive zone: the box the zone may grow into (the far field's fine region), on grid
+  /// nodes; the zone itself otherwise.
+  std::array<double, 3> limit_min{{0.0, 0.0, 0.0}};
+  std::array<double, 3> limit_max{{0.0, 0.0, 0.0}};
 };
+
+/// The hybrid parameters with the zone a deck asks for: its box as given, or the bullet
+/// path's tube through the split body (projectile radius plus one cell plus the margin),
+/// widened outwards to grid nodes and cut at the body's faces. Unchanged when the body or
+/// the projectile cannot be found (check_decomposition then names the problem).
+HybridParameters resolve_zone(const mpm::SceneParameters& scene, const HybridParameters& hybrid);
 
 /// Problems with the split (empty when fine), naming HybridParameters' members ("body",
 /// "zone_min", "zone_max", "scheme") and the far field's ("far_field.<member>").

@@ -9,11 +9,15 @@ namespace binary = mpm::binary;
 
 namespace
 {
-constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '1'};
+constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '2'};
 } // namespace
 
 void HybridSolver::save(std::ostream& out) const
 {
+  // The zone first: a restart rebuilds the far field of a grown zone before reading it.
+  out.write(tag, sizeof(tag));
+  binary::put(out, split.hybrid.zone_min);
+  binary::put(out, split.hybrid.zone_max);
   mpm_solver->save(out);
   fe_solver->save(out);
   out.write(tag, sizeof(tag));
@@ -24,6 +28,9 @@ void HybridSolver::save(std::ostream& out) const
   for (const std::vector<mpm::Vector3>* v : {&velocity_start, &velocity_end, &created, &correction})
     binary::put_vector(out, *v);
   binary::put(out, book);
+  binary::put(out, last_zone_check);
+  binary::put(out, n_cells_beyond_limit);
+  binary::put_vector(out, zone_conversions);
   out.write(tag, sizeof(tag));
   if (!out)
     throw std::runtime_error("hybrid checkpoint could not be written");
@@ -31,6 +38,28 @@ void HybridSolver::save(std::ostream& out) const
 
 void HybridSolver::restore(std::istream& in)
 {
+  binary::expect_tag(in, tag, "not a vulnus hybrid checkpoint of this version (bad header)");
+  std::array<double, 3> zone_min{}, zone_max{};
+  binary::get(in, zone_min);
+  binary::get(in, zone_max);
+  if (zone_min != split.hybrid.zone_min || zone_max != split.hybrid.zone_max)
+  {
+    // The run had grown its zone: the far field of that zone, its state read below.
+    split.hybrid.zone_min = zone_min;
+    split.hybrid.zone_max = zone_max;
+    for (int d = 0; d < 3; ++d)
+    {
+      split.fe.hole_min[d] = zone_min[d];
+      split.fe.hole_max[d] = zone_max[d];
+      split.mpm.bodies[split.coupled_body].box_min[d] = zone_min[d];
+      split.mpm.bodies[split.coupled_body].box_max[d] = zone_max[d];
+    }
+    fe_solver = build_far_field();
+    match_interface_nodes(comm);
+    for (std::vector<mpm::Vector3>* v : {&velocity_start, &velocity_end, &created, &correction})
+      v->assign(keys.size(), mpm::Vector3::Zero());
+    mpm_solver->share_nodes({split.coupled_body, keys, this});
+  }
   mpm_solver->restore(in);
   fe_solver->restore(in);
   binary::expect_tag(in, tag, "not a vulnus hybrid checkpoint (bad coupling header)");
@@ -51,6 +80,9 @@ void HybridSolver::restore(std::istream& in)
       throw std::runtime_error("hybrid checkpoint is inconsistent (interface vectors)");
   }
   binary::get(in, book);
+  binary::get(in, last_zone_check);
+  binary::get(in, n_cells_beyond_limit);
+  binary::get_vector(in, zone_conversions);
   binary::expect_tag(in, tag, "hybrid checkpoint is incomplete (no trailer)");
 }
 } // namespace vulnus::coupling

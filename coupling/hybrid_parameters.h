@@ -13,6 +13,31 @@ enum class CouplingScheme
   multi_step ///< scheme 2: the FE side takes steps of several MPM substeps
 };
 
+/// Where the MPM zone starts: the deck's box, or the bullet path's tube (radius plus one
+/// cell plus a margin) through the body, on grid nodes.
+enum class ZoneStart
+{
+  box,
+  around_path
+};
+
+/// Adaptive zone (docs/adaptive_zone.md): far-field cells whose material nears failure turn
+/// into material points, the zone box growing to hold them.
+struct AdaptiveZoneParameters
+{
+  bool enabled = false;
+  /// A cell converts when a quadrature point reaches this fraction of the failure criterion
+  /// (matrix shear over its limit, fiber stretch - 1 over limit - 1) or has failed.
+  double threshold = 0.5;
+  /// The zone grows to hold a converting cell with this many cells around it.
+  unsigned int margin_cells = 2;
+  /// How far beyond its start the zone may grow on every side, m; the far-field mesh has
+  /// the grid's cells there.
+  double reach = 0.01;
+  /// MPM steps between checks (at the end of an FE window).
+  unsigned int check_interval = 10;
+};
+
 struct HybridParameters
 {
   bool enabled = false;
@@ -26,6 +51,10 @@ struct HybridParameters
   /// multi_step: MPM substeps per FE step; 0 chooses the FE step from its own stability
   /// (explicit) or the deck step (implicit).
   unsigned int substeps = 0;
+  ZoneStart zone_start = ZoneStart::box;
+  /// around_path: the tissue kept around the projectile's radius plus one cell, m.
+  double path_margin = 0.002;
+  AdaptiveZoneParameters adaptive;
   /// A failed far-field quadrature point stops the run (else it warns and goes on).
   bool stop_when_fe_points_fail = true;
 };

@@ -28,20 +28,10 @@ dealii::Tensor<1, 3> to_tensor(const mpm::Vector3& v)
 
 HybridSolver::HybridSolver(const HybridScene& scene, MPI_Comm communicator,
                            const std::function<void(fem::FarFieldSolver&)>& before_fe_setup)
-  : split(scene)
+  : split(scene), comm(communicator), prepare_far_field(before_fe_setup)
 {
   mpm_solver = std::make_unique<mpm::Solver>(split.mpm, communicator);
-  fe_solver = std::make_unique<fem::FarFieldSolver>(split.fe, communicator);
-  if (before_fe_setup)
-    before_fe_setup(*fe_solver);
-  fe_solver->setup();
-  const std::array<double, 3> v0 = split.initial_velocity;
-  fe_solver->set_initial_velocity([v0](const dealii::Point<3>&) {
-    dealii::Tensor<1, 3> v;
-    for (unsigned int c = 0; c < 3; ++c)
-      v[c] = v0[c];
-    return v;
-  });
+  fe_solver = build_far_field();
   match_interface_nodes(communicator);
   for (std::vector<mpm::Vector3>* v :
        {&velocity_start, &velocity_end, &created, &correction})
@@ -54,6 +44,7 @@ void HybridSolver::match_interface_nodes(MPI_Comm communicator)
   const mpm::Grid& grid = mpm_solver->background_grid();
   const double h = grid.cell_size();
   std::vector<std::int64_t> my_keys;
+  keys.clear();
   std::string problem;
   for (const fem::NodeRecord& node : fe_solver->interface_nodes())
   {
@@ -103,6 +94,22 @@ void HybridSolver::match_interface_nodes(MPI_Comm communicator)
 
 HybridSolver::~HybridSolver() = default;
 
+std::unique_ptr<fem::FarFieldSolver> HybridSolver::build_far_field() const
+{
+  auto far_field = std::make_unique<fem::FarFieldSolver>(split.fe, comm);
+  if (prepare_far_field)
+    prepare_far_field(*far_field);
+  far_field->setup();
+  const std::array<double, 3> v0 = split.initial_velocity;
+  far_field->set_initial_velocity([v0](const dealii::Point<3>&) {
+    dealii::Tensor<1, 3> v;
+    for (unsigned int c = 0; c < 3; ++c)
+      v[c] = v0[c];
+    return v;
+  });
+  return far_field;
+}
+
 void HybridSolver::set_initial_velocity(const std::function<mpm::Vector3(const mpm::Vector3&)>& field)
 {
   mpm_solver->set_point_velocities(field, static_cast<int>(split.coupled_body));
@@ -115,6 +122,15 @@ bool HybridSolver::finished() const { return mpm_solver->finished(); }
 
 void HybridSolver::advance()
 {
+  const AdaptiveZoneParameters& adaptive = split.hybrid.adaptive;
+  if (adaptive.enabled && !window_open &&
+      book.mpm_steps >= last_zone_check + adaptive.check_interval)
+  {
+    last_zone_check = book.mpm_steps;
+    const auto [grown_min, grown_max] = zone_needed();
+    if (grown_min != split.hybrid.zone_min || grown_max != split.hybrid.zone_max)
+      grow_zone(grown_min, grown_max);
+  }
   const double t = mpm_solver->time();
   const double end = split.mpm.end_time;
   if (split.hybrid.scheme == CouplingScheme::same_step)

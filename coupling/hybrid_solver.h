@@ -29,12 +29,32 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
 
 namespace vulnus::coupling
 {
+/// One growth of the adaptive zone.
+struct ZoneConversion
+{
+  double time = 0.0;          ///< s
+  std::uint64_t mpm_step = 0;
+  std::array<double, 3> zone_min{{0.0, 0.0, 0.0}}; ///< the zone after it, m
+  std::array<double, 3> zone_max{{0.0, 0.0, 0.0}};
+  std::uint64_t cells = 0;    ///< far-field cells removed
+  std::uint64_t points = 0;   ///< material points made of them
+  double volume = 0.0;        ///< reference volume converted, m^3
+  double mass = 0.0;          ///< kg
+  /// Kinetic plus strain energy of both sides and the total momentum (with the impulse in
+  /// transit) just before and after, J and kg m/s.
+  double energy_before = 0.0, energy_after = 0.0;
+  Eigen::Vector3d momentum_before = Eigen::Vector3d::Zero();
+  Eigen::Vector3d momentum_after = Eigen::Vector3d::Zero();
+};
+
 class HybridSolver : public mpm::InterfacePartner
 {
 public:
@@ -75,6 +95,36 @@ public:
   /// Kinetic + strain energy of the FE side, J.
   double fe_mechanical_energy() const;
 
+  // --- adaptive zone (coupling/adaptive_zone.cc) -----------------------------------------
+  /// The zone now (it grows with the adaptive zone), m.
+  const std::array<double, 3>& zone_min() const { return split.hybrid.zone_min; }
+  const std::array<double, 3>& zone_max() const { return split.hybrid.zone_max; }
+  const std::vector<ZoneConversion>& conversions() const { return zone_conversions; }
+  /// Kinetic plus strain energy the conversions changed, summed, J (negative: lost).
+  double conversion_energy_change() const
+  {
+    double sum = 0.0;
+    for (const ZoneConversion& c : zone_conversions)
+      sum += c.energy_after - c.energy_before;
+    return sum;
+  }
+  /// Reference volume converted so far, m^3.
+  double converted_volume() const
+  {
+    double sum = 0.0;
+    for (const ZoneConversion& c : zone_conversions)
+      sum += c.volume;
+    return sum;
+  }
+  /// Cells nearing failure at the last check that lie beyond the zone's limit (they stay
+  /// finite elements).
+  std::uint64_t cells_beyond_limit() const { return n_cells_beyond_limit; }
+  /// Collective: grows the zone to [new_min, new_max] (on grid nodes, holding the zone, within
+  /// the limit): the far-field cells inside become material points of the split body, the
+  /// far field is rebuilt without them and takes over the rest of its state, and the
+  /// interface moves to the new zone's surface. Call between steps at a window end.
+  void grow_zone(const std::array<double, 3>& new_min, const std::array<double, 3>& new_max);
+
   /// Both sides' states and the coupling's own (window, interface velocities, corrections,
   /// ledger) in binary; restore() on a solver built from the same deck on the same rank count
   /// continues an explicit-far-field run bit for bit.
@@ -86,6 +136,11 @@ public:
                 std::vector<mpm::Vector3>& velocity_end) override;
 
 private:
+  /// Adaptive zone: the box the zone must grow to so that every far-field cell nearing
+  /// failure sits inside with the margin (the zone itself when none does). Collective.
+  std::pair<std::array<double, 3>, std::array<double, 3>> zone_needed();
+  /// Builds the far field for the current split.fe (setup and the initial velocity).
+  std::unique_ptr<fem::FarFieldSolver> build_far_field() const;
   /// Lists every FE interface node by its grid key on every rank (sorted) and sums the FE
   /// masses there.
   void match_interface_nodes(MPI_Comm communicator);
@@ -120,5 +175,11 @@ private:
   std::vector<mpm::Vector3> created;    ///< momentum the current window created, by key
   std::vector<mpm::Vector3> correction; ///< impulse applied in the current window, by key
   std::vector<dealii::Tensor<1, 3>> targets;
+
+  MPI_Comm comm;
+  std::function<void(fem::FarFieldSolver&)> prepare_far_field;
+  std::vector<ZoneConversion> zone_conversions;
+  std::uint64_t n_cells_beyond_limit = 0;
+  std::uint64_t last_zone_check = 0; ///< MPM step of the last check
 };
 } // namespace vulnus::coupling

@@ -16,6 +16,26 @@ void declare_hybrid_section(EntryTable& table)
   table.declare("Zone max", "0.012, 0.01, 0.012", point_pattern(),
                 "Upper corner of the MPM zone [m], on grid nodes; the zone must hold the "
                 "bullet path with its radius plus one cell, and the tissue that fails.");
+  table.declare("Zone", "box", Patterns::Selection("box|around path"),
+                "Where the MPM zone starts: box: Zone min to Zone max; around path: the "
+                "projectile's path through the body with its radius plus one cell plus Zone "
+                "margin on each side, widened to grid nodes.");
+  table.declare("Zone margin", "0.002", Patterns::Double(0.0, 1.0),
+                "Zone = around path: tissue kept around the projectile's radius plus one cell [m].");
+  table.declare("Adaptive zone", "false", Patterns::Bool(),
+                "true: far-field cells whose material nears failure become material points "
+                "during the run; the zone box grows to hold them (docs/adaptive_zone.md).");
+  table.declare("Adaptive zone threshold", "0.5", Patterns::Double(0.0, 1.0),
+                "A cell converts when one of its quadrature points reaches this fraction of the "
+                "failure limits (matrix shear / limit, (fiber stretch - 1) / (limit - 1)) or "
+                "has failed.");
+  table.declare("Adaptive zone margin", "2", Patterns::Integer(0, 1000),
+                "Cells of tissue the grown zone keeps around a converting cell.");
+  table.declare("Adaptive zone reach", "0.01", Patterns::Double(0.0, 10.0),
+                "How far the zone may grow beyond its start on every side [m]; the far field "
+                "has the grid's cells there.");
+  table.declare("Adaptive zone check interval", "10", Patterns::Integer(1, 100000),
+                "MPM steps between conversion checks (each at the end of an FE window).");
   table.declare("Body", "", Patterns::Anything(),
                 "Body split into zone and far field; empty: the only deformable box body "
                 "that is not the projectile.");
@@ -42,6 +62,15 @@ void parse_hybrid_section(dealii::ParameterHandler& prm, coupling::HybridParamet
   hybrid.zone_min = {lo[0], lo[1], lo[2]};
   hybrid.zone_max = {hi[0], hi[1], hi[2]};
   hybrid.body = prm.get("Body");
+  hybrid.zone_start =
+    prm.get("Zone") == "around path" ? coupling::ZoneStart::around_path : coupling::ZoneStart::box;
+  hybrid.path_margin = prm.get_double("Zone margin");
+  hybrid.adaptive.enabled = prm.get_bool("Adaptive zone");
+  hybrid.adaptive.threshold = prm.get_double("Adaptive zone threshold");
+  hybrid.adaptive.margin_cells = static_cast<unsigned int>(prm.get_integer("Adaptive zone margin"));
+  hybrid.adaptive.reach = prm.get_double("Adaptive zone reach");
+  hybrid.adaptive.check_interval =
+    static_cast<unsigned int>(prm.get_integer("Adaptive zone check interval"));
   hybrid.scheme = prm.get("Scheme") == "same step" ? coupling::CouplingScheme::same_step
                                                     : coupling::CouplingScheme::multi_step;
   hybrid.substeps = static_cast<unsigned int>(prm.get_integer("Substeps"));

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "fem/fem_parameters.h"
+#include "materials/material.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
@@ -52,6 +53,19 @@ struct FeDiagnostics
   std::array<dealii::Tensor<1, 3>, n_slab_faces + 1> support_impulses;
   unsigned long long n_failed_points = 0; ///< quadrature points with any failure flag
   double max_wave_speed = 0.0;            ///< m/s over quadrature points
+};
+
+/// A material point made from a far-field cell (adaptive zone): its reference position and
+/// weight, and the fields the FE interpolates there.
+struct ConvertedPoint
+{
+  dealii::Point<3> reference_position;   ///< m
+  dealii::Tensor<1, 3> displacement;     ///< m
+  dealii::Tensor<1, 3> velocity;         ///< m/s
+  dealii::Tensor<2, 3> deformation_gradient;
+  materials::PointState state;           ///< failure flags and plastic history
+  double reference_volume = 0.0;         ///< m^3, the point's quadrature weight
+  double mass = 0.0;                     ///< kg, rho0 times the reference volume
 };
 
 /// Statistics of the last implicit step.
@@ -177,6 +191,26 @@ public:
   std::vector<dealii::Tensor<1, 3>> interface_reactions() const;
   /// velocity_driven: velocities of the interface nodes at the end of the next step.
   void set_interface_velocities(const std::vector<dealii::Tensor<1, 3>>& velocities);
+
+  // --- adaptive zone (fem/far_field_conversion.cc) ---------------------------------------
+  /// Collective: the reference centres of the cells (every rank's, on every rank) with a
+  /// quadrature point at or above `threshold` of the failure criterion: a failed point, or
+  /// the larger of matrix shear / its limit and (fiber stretch - 1) / (limit - 1). Empty for
+  /// a material without failure criterion.
+  std::vector<dealii::Point<3>> cells_nearing_failure(double threshold) const;
+  /// Material points for this rank's cells whose centre lies inside [box_min, box_max] (not
+  /// collective): points_per_axis^3 per cell at the midpoints of equal sub-cells (the MPM
+  /// lattice), each with the fields interpolated there and the history of the Gauss point
+  /// in its octant. Linear elements only.
+  std::vector<ConvertedPoint> material_points_inside(const std::array<double, 3>& box_min,
+                                                     const std::array<double, 3>& box_max,
+                                                     unsigned int points_per_axis) const;
+  /// Collective: takes over the state of `before`, a solver of the same slab whose mesh has
+  /// the same cells except those this one's larger hole removed: nodal displacement,
+  /// velocity and acceleration, quadrature-point histories, time, step count and running
+  /// energies and impulses; then evaluates the forces at that state. Throws std::logic_error
+  /// when a node or cell has no counterpart.
+  void take_state_from(const FarFieldSolver& before);
 
   /// The evolving state of this rank in binary (collective only through the caller's order);
   /// restore() on a solver set up from the same deck on the same rank count continues the

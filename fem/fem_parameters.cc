@@ -81,6 +81,24 @@ std::vector<ParameterProblem> check_parameters(const FeSceneParameters& p)
               " is not a multiple of the interface cell size " + number(h),
             "align the MPM zone with the grid");
     }
+  if (p.has_focus && p.has_hole && h > 0.0)
+    for (unsigned int d = 0; d < 3; ++d)
+    {
+      const std::string axis = axis_names[d];
+      if (!(p.focus_min[d] <= p.hole_min[d] + 1e-12 * h &&
+            p.focus_max[d] >= p.hole_max[d] - 1e-12 * h &&
+            p.focus_min[d] >= p.slab_min[d] - 1e-12 * h &&
+            p.focus_max[d] <= p.slab_max[d] + 1e-12 * h))
+        add({"focus_min", "focus_max"},
+            "the fine region's " + axis + " range [" + number(p.focus_min[d]) + ", " +
+              number(p.focus_max[d]) + "] does not hold the hole or leaves the slab",
+            "give a region between the MPM zone and the slab");
+      for (const double offset : {p.hole_min[d] - p.focus_min[d], p.focus_max[d] - p.hole_max[d]})
+        if (std::abs(offset / h - std::round(offset / h)) > 1e-6)
+          add({"focus_min", "focus_max"},
+              "the fine region's " + axis + " bounds are not whole cells from the hole's",
+              "align the region with the grid");
+    }
   if (p.degree < 1 || p.degree > 2)
     add({"degree"}, std::to_string(p.degree) + " not supported", "use 1 or 2");
   if (!(p.cfl > 0.0 && p.cfl <= 1.0))

@@ -91,6 +91,12 @@ struct FeSceneParameters
   bool has_hole = false;
   std::array<double, 3> hole_min{{0.02, 0.0, 0.02}};
   std::array<double, 3> hole_max{{0.03, 0.01, 0.03}};
+  /// Optional box meshed with cells of the interface cell size, holding the hole (the region
+  /// an adaptive MPM zone may grow into): the cells there stay the same when the hole grows
+  /// inside it. Without it the fine cells are the hole's own extent.
+  bool has_focus = false;
+  std::array<double, 3> focus_min{{0.0, 0.0, 0.0}};
+  std::array<double, 3> focus_max{{0.0, 0.0, 0.0}};
 
   /// Cell size next to the hole (the MPM grid spacing), m. Without a hole the mesh is uniform
   /// with about this size.

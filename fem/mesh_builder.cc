@@ -69,8 +69,8 @@ void build_slab_mesh(const FeSceneParameters& p, dealii::Triangulation<3, 3>& tr
   std::vector<std::vector<double>> cell_centres(3);
   for (unsigned int d = 0; d < 3; ++d)
   {
-    const double focus_lo = p.has_hole ? p.hole_min[d] : 0.0;
-    const double focus_hi = p.has_hole ? p.hole_max[d] : 0.0;
+    const double focus_lo = p.has_focus ? p.focus_min[d] : (p.has_hole ? p.hole_min[d] : 0.0);
+    const double focus_hi = p.has_focus ? p.focus_max[d] : (p.has_hole ? p.hole_max[d] : 0.0);
     steps[d] = graded_step_sizes(p.slab_min[d], p.slab_max[d], focus_lo, focus_hi,
                                  p.interface_cell_size, p.far_cell_size, p.grading_ratio);
     double x = p.slab_min[d];

@@ -49,6 +49,21 @@ Particles Particles::copy_of_range(const std::size_t begin, const std::size_t en
   return part;
 }
 
+void Particles::insert_into_body(const std::size_t b, const Particles& added)
+{
+  const std::size_t at = end_of(b);
+  const std::size_t n = added.size();
+  const std::size_t pool_offset = plastic_pool.size();
+  for_each_array_with(added, [&](auto& mine, const auto& theirs)
+                      { mine.insert(mine.begin() + at, theirs.begin(), theirs.end()); });
+  for (std::size_t i = at; i < at + n; ++i)
+    if (plastic_slot[i].index != materials::PlasticSlot::none)
+      plastic_slot[i].index += static_cast<std::uint32_t>(pool_offset);
+  plastic_pool.insert(plastic_pool.end(), added.plastic_pool.begin(), added.plastic_pool.end());
+  for (std::size_t c = b + 1; c < body_begin.size(); ++c)
+    body_begin[c] += n;
+}
+
 void Particles::write_back_body(const std::size_t b, const Particles& part)
 {
   const std::size_t begin = begin_of(b);

@@ -114,6 +114,10 @@ struct Particles
   /// into body b.
   void write_back_body(std::size_t b, const Particles& part);
 
+  /// Inserts the points of `added` (a one-body container) at the end of body b, with their
+  /// plastic histories; later bodies move up.
+  void insert_into_body(std::size_t b, const Particles& added);
+
   /// Removes the points whose keep flag is 0, preserving order and body ranges (and compacts
   /// the plastic pool).
   void keep_only(const std::vector<char>& keep);

@@ -106,6 +106,14 @@ public:
   void share_nodes(const SharedNodes& nodes);
   const SharedNodes& shared_nodes() const { return shared; }
 
+  /// Collective: adds material to body b (the adaptive zone's converted far field). Each
+  /// rank passes its own points as a one-body container with position, reference position,
+  /// velocity, deformation gradient, mass, reference volume, fiber, failure flags and plastic
+  /// histories set; they get fresh ids, their stress, energy and wave speed from the body's
+  /// law at their F (their histories unchanged), and move to the ranks whose slabs hold
+  /// them. Returns their kinetic plus stored energy, J, over all ranks.
+  double add_points(std::size_t b, Particles added);
+
   /// True when the end time is reached or the projectile's tail has left the targets.
   /// Collective.
   bool finished() const;

@@ -55,6 +55,13 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
     << " cells, " << solver.fe().n_dofs() << " dofs, " << integrator_name(split.fe.integrator)
     << "; " << solver.n_interface_nodes() << " shared interface nodes, scheme "
     << scheme_name(split.hybrid.scheme) << ", " << omp_get_max_threads() << " thread(s)";
+  if (split.hybrid.adaptive.enabled)
+    o << "; adaptive zone: cells convert at " << split.hybrid.adaptive.threshold
+      << " of the failure limits, with " << split.hybrid.adaptive.margin_cells
+      << " cells around them, within (" << split.limit_min[0] << ", " << split.limit_min[1]
+      << ", " << split.limit_min[2] << ") to (" << split.limit_max[0] << ", "
+      << split.limit_max[1] << ", " << split.limit_max[2] << ") m, checked every "
+      << split.hybrid.adaptive.check_interval << " MPM steps";
   const mpm::RankGroup& ranks = solver.mpm().rank_group();
   if (ranks.distributed())
     o << " on each of " << ranks.size() << " MPI ranks (MPM zone in slabs along axis "
@@ -94,7 +101,28 @@ std::vector<std::string> HybridStepper::check_validity(const bool final_check)
 std::string HybridStepper::blow_up_remedy() const
 {
   return "a smaller Time/CFL or Far field time step; an inverted or failed FE element means the "
-         "wound reached the far field: enlarge Hybrid/Zone min and Zone max";
+         "wound reached the far field: enlarge Hybrid/Zone min and Zone max, or set "
+         "Hybrid/Adaptive zone = true (or widen its reach)";
+}
+
+std::vector<std::string> HybridStepper::events()
+{
+  std::vector<std::string> lines;
+  const std::vector<coupling::ZoneConversion>& done = solver.conversions();
+  for (; conversions_logged < done.size(); ++conversions_logged)
+  {
+    const coupling::ZoneConversion& c = done[conversions_logged];
+    std::ostringstream o;
+    o << std::setprecision(4) << "adaptive zone: at t = " << c.time << " s (step " << c.mpm_step
+      << ") the zone grew to (" << c.zone_min[0] << ", " << c.zone_min[1] << ", " << c.zone_min[2]
+      << ") to (" << c.zone_max[0] << ", " << c.zone_max[1] << ", " << c.zone_max[2] << ") m: "
+      << c.cells << " far-field cells became " << c.points << " points (" << c.volume * 1e6
+      << " cm^3); energy change " << c.energy_after - c.energy_before << " J of "
+      << c.energy_before << " J, momentum change " << (c.momentum_after - c.momentum_before).norm()
+      << " kg m/s";
+    lines.push_back(o.str());
+  }
+  return lines;
 }
 
 std::vector<std::string> HybridStepper::history_columns() const { return hybrid_history_columns(); }
@@ -111,7 +139,15 @@ std::vector<std::string> HybridStepper::final_warnings() const
   if (failed > 0)
     warnings.push_back("*** " + std::to_string(failed) +
                        " FE quadrature points failed: the wound reached the far field, whose "
-                       "answer is not the MPM zone's; enlarge Hybrid/Zone min and Zone max");
+                       "answer is not the MPM zone's; enlarge Hybrid/Zone min and Zone max" +
+                       std::string(solver.scene().hybrid.adaptive.enabled
+                                     ? " or Hybrid/Adaptive zone reach, or lower the Adaptive "
+                                       "zone threshold"
+                                     : ", or set Hybrid/Adaptive zone = true"));
+  if (solver.cells_beyond_limit() > 0)
+    warnings.push_back("*** " + std::to_string(solver.cells_beyond_limit()) +
+                       " far-field cells near failure lie beyond the adaptive zone's reach and "
+                       "stayed finite elements; widen Hybrid/Adaptive zone reach");
   const std::vector<std::string> mpm_warnings = mpm_final_warnings(solver.mpm());
   warnings.insert(warnings.end(), mpm_warnings.begin(), mpm_warnings.end());
   return warnings;
@@ -161,6 +197,30 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                        {"mpm_seconds", mpm_side.phase_times().total() - mpm_side.phase_times().coupling},
                        {"coupling_and_fe_seconds", mpm_side.phase_times().coupling}};
   summary["hybrid"]["monitors"] = monitors.summary();
+  summary["hybrid"]["zone_min_m"] = solver.zone_min();
+  summary["hybrid"]["zone_max_m"] = solver.zone_max();
+  if (split.hybrid.adaptive.enabled)
+  {
+    nlohmann::json list = nlohmann::json::array();
+    for (const coupling::ZoneConversion& c : solver.conversions())
+      list.push_back({{"time_s", c.time},
+                      {"mpm_step", c.mpm_step},
+                      {"zone_min_m", c.zone_min},
+                      {"zone_max_m", c.zone_max},
+                      {"cells", c.cells},
+                      {"points", c.points},
+                      {"volume_m3", c.volume},
+                      {"mass_kg", c.mass},
+                      {"energy_before_J", c.energy_before},
+                      {"energy_change_J", c.energy_after - c.energy_before},
+                      {"momentum_change_kg_m_s", (c.momentum_after - c.momentum_before).norm()}});
+    summary["hybrid"]["adaptive_zone"] = {{"conversions", list},
+                                          {"converted_volume_m3", solver.converted_volume()},
+                                          {"energy_change_J", solver.conversion_energy_change()},
+                                          {"cells_beyond_reach", solver.cells_beyond_limit()},
+                                          {"limit_min_m", split.limit_min},
+                                          {"limit_max_m", split.limit_max}};
+  }
   // What the far field's supports gave the body, face by face (x-, x+, y-, y+, z-, z+).
   static const char* const face_names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
   for (unsigned int b = 0; b < fem::n_slab_faces; ++b)

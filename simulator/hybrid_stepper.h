@@ -27,6 +27,7 @@ public:
   std::string progress() const override;
   MPI_Comm communicator() const override { return solver.mpm().rank_group().communicator(); }
   std::string blow_up_remedy() const override;
+  std::vector<std::string> events() override;
   double energy_balance_error() const override;
   std::string energy_error_causes() const override;
   std::vector<std::string> check_validity(bool final_check) override;
@@ -50,6 +51,7 @@ public:
 
 private:
   coupling::HybridSolver solver;
+  std::size_t conversions_logged = 0;
   ProjectileStart projectile;
   double initial_energy; ///< J, of the whole scene at t = 0
   HybridMonitors monitors;

@@ -110,6 +110,8 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
       directory.warn(warning);
       totals.warnings.push_back(warning);
     }
+    for (const std::string& event : stepper.events())
+      directory.log(event);
   };
   auto report_failure = [&](const std::exception& e) {
     const FailureReport report = describe_failure(e, deck::entry_of_scene_parameter);

@@ -62,6 +62,9 @@ public:
   /// monitors. Returns the warnings to record now; throws mpm::BlowUp for one that stops the
   /// run.
   virtual std::vector<std::string> check_validity(bool /*final_check*/) { return {}; }
+  /// What the last step changed in the scene itself, one log line each (the adaptive zone's
+  /// growth); rank 0 logs them.
+  virtual std::vector<std::string> events() { return {}; }
 
   virtual std::vector<std::string> history_columns() const = 0;
   /// Collective: one row matching history_columns().

@@ -1,0 +1,162 @@
+// The adaptive MPM zone (docs/adaptive_zone.md): far-field cells whose material nears failure
+// become material points. The zone stays a box on grid nodes and grows to hold them; the far
+// field's mesh has the grid's cells wherever the zone may grow, so the grown far field is the
+// old one minus the converted cells and takes over the rest of its state node by node and
+// cell by cell. Mass and momentum pass to the points exactly (the lattice integrates the
+// trilinear fields exactly); the kinetic energy drops by the lumped-minus-consistent
+// difference of the converted cells, which each conversion records.
+#include "coupling/hybrid_solver.h"
+
+#include "materials/fiber_field.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace vulnus::coupling
+{
+namespace
+{
+double energy_of_both(const mpm::SceneDiagnostics& m, const fem::FeDiagnostics& f)
+{
+  return m.kinetic_energy + m.strain_energy + f.kinetic_energy + f.strain_energy;
+}
+} // namespace
+
+std::pair<std::array<double, 3>, std::array<double, 3>> HybridSolver::zone_needed()
+{
+  std::array<double, 3> lo = split.hybrid.zone_min, hi = split.hybrid.zone_max;
+  const double h = split.mpm.cell_size;
+  const double origin[3] = {split.mpm.domain_min[0], split.mpm.domain_min[1],
+                            split.mpm.domain_min[2]};
+  const double reach = (split.hybrid.adaptive.margin_cells + 0.5) * h;
+  n_cells_beyond_limit = 0;
+  for (const dealii::Point<3>& c : fe_solver->cells_nearing_failure(split.hybrid.adaptive.threshold))
+  {
+    bool inside_limit = true;
+    for (int d = 0; d < 3; ++d)
+      inside_limit = inside_limit && c[d] > split.limit_min[d] && c[d] < split.limit_max[d];
+    if (!inside_limit)
+    {
+      ++n_cells_beyond_limit;
+      continue;
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+      const double below = origin[d] + h * std::floor((c[d] - reach - origin[d]) / h + 1e-9);
+      const double above = origin[d] + h * std::ceil((c[d] + reach - origin[d]) / h - 1e-9);
+      lo[d] = std::min(lo[d], std::max(below, split.limit_min[d]));
+      hi[d] = std::max(hi[d], std::min(above, split.limit_max[d]));
+    }
+  }
+  return {lo, hi};
+}
+
+void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
+                             const std::array<double, 3>& new_max)
+{
+  const double h = split.mpm.cell_size;
+  for (int d = 0; d < 3; ++d)
+    if (new_min[d] > split.hybrid.zone_min[d] + 1e-9 * h ||
+        new_max[d] < split.hybrid.zone_max[d] - 1e-9 * h ||
+        new_min[d] < split.limit_min[d] - 1e-9 * h || new_max[d] > split.limit_max[d] + 1e-9 * h)
+      throw std::logic_error("adaptive zone: the new zone must hold the old one within the limit");
+
+  ZoneConversion record;
+  record.time = mpm_solver->time();
+  record.mpm_step = mpm_solver->step_count();
+  record.zone_min = new_min;
+  record.zone_max = new_max;
+  record.energy_before = energy_of_both(mpm_solver->diagnostics(), fe_solver->diagnostics());
+  record.momentum_before = total_momentum();
+  const unsigned long long cells_before = fe_solver->n_active_cells();
+
+  // The converted cells' material as points of the split body (each rank its own cells).
+  const std::size_t body = split.coupled_body;
+  const mpm::BodyParameters& slab = split.mpm.bodies[body];
+  const bool plastic = mpm_solver->body_material(body).has_plastic_history();
+  const bool fibers = mpm_solver->body_material(body).uses_fibers();
+  mpm::Particles added;
+  added.start_body();
+  double volume = 0.0;
+  for (const fem::ConvertedPoint& p :
+       fe_solver->material_points_inside(new_min, new_max, slab.particles_per_cell))
+  {
+    const mpm::Vector3 X(p.reference_position[0], p.reference_position[1], p.reference_position[2]);
+    const mpm::Vector3 u(p.displacement[0], p.displacement[1], p.displacement[2]);
+    const mpm::Vector3 v(p.velocity[0], p.velocity[1], p.velocity[2]);
+    const mpm::Vector3 fiber =
+      fibers ? materials::fiber_direction(slab.fibers, X) : mpm::Vector3::UnitX();
+    added.append(X + u, v, p.mass, p.reference_volume, fiber, plastic);
+    const std::size_t i = added.size() - 1;
+    added.reference_position[i] = X.cast<float>();
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        added.deformation_gradient[i](a, b) = p.deformation_gradient[a][b];
+    added.failure[i] = p.state.failure;
+    if (materials::PlasticHistory* history = added.plastic_of(i))
+      *history = p.state.plastic;
+    volume += p.reference_volume;
+  }
+  added.finish_body();
+  const std::uint64_t n_added = added.size();
+
+  // The far field without them, taking over the state of the rest.
+  split.hybrid.zone_min = new_min;
+  split.hybrid.zone_max = new_max;
+  for (int d = 0; d < 3; ++d)
+  {
+    split.fe.hole_min[d] = new_min[d];
+    split.fe.hole_max[d] = new_max[d];
+    split.mpm.bodies[body].box_min[d] = new_min[d];
+    split.mpm.bodies[body].box_max[d] = new_max[d];
+  }
+  std::unique_ptr<fem::FarFieldSolver> grown = build_far_field();
+  grown->take_state_from(*fe_solver);
+  fe_solver = std::move(grown);
+
+  // The impulse still in transit, by grid key: it stays on nodes that remain on the
+  // interface; a node that is now inside the zone hands it to the nearest interface node.
+  std::map<std::int64_t, mpm::Vector3> pending;
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    pending[keys[k]] = created[k] - correction[k];
+  match_interface_nodes(comm);
+  for (std::vector<mpm::Vector3>* v : {&velocity_start, &velocity_end, &created, &correction})
+    v->assign(keys.size(), mpm::Vector3::Zero());
+  const mpm::Grid& grid = mpm_solver->background_grid();
+  for (const auto& [key, impulse] : pending)
+  {
+    const auto at = std::lower_bound(keys.begin(), keys.end(), key);
+    std::size_t k = static_cast<std::size_t>(at - keys.begin());
+    if (at == keys.end() || *at != key)
+    {
+      const mpm::Vector3 x = grid.node_position(key);
+      double nearest = std::numeric_limits<double>::max();
+      for (std::size_t j = 0; j < keys.size(); ++j)
+        if (const double r = (grid.node_position(keys[j]) - x).squaredNorm(); r < nearest)
+        {
+          nearest = r;
+          k = j;
+        }
+    }
+    created[k] += impulse;
+  }
+
+  const double added_energy = mpm_solver->add_points(body, std::move(added));
+  (void)added_energy;
+  mpm_solver->share_nodes({body, keys, this});
+
+  std::uint64_t counts[1] = {n_added};
+  mpm_solver->rank_group().sum(counts, 1);
+  double sums[1] = {volume};
+  mpm_solver->rank_group().sum(sums, 1);
+  record.cells = cells_before - fe_solver->n_active_cells();
+  record.points = counts[0];
+  record.volume = sums[0];
+  record.mass = sums[0] * split.fe.density;
+  record.energy_after = energy_of_both(mpm_solver->diagnostics(), fe_solver->diagnostics());
+  record.momentum_after = total_momentum();
+  zone_conversions.push_back(record);
+}
+} // namespace vulnus::coupling
