@@ -9,7 +9,10 @@
 
 #include "materials/fiber_field.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -26,30 +29,53 @@ double energy_of_both(const mpm::SceneDiagnostics& m, const fem::FeDiagnostics& 
 
 std::pair<std::array<double, 3>, std::array<double, 3>> HybridSolver::zone_needed()
 {
+  const auto start = std::chrono::steady_clock::now();
   std::array<double, 3> lo = split.hybrid.zone_min, hi = split.hybrid.zone_max;
   const double h = split.mpm.cell_size;
   const double origin[3] = {split.mpm.domain_min[0], split.mpm.domain_min[1],
                             split.mpm.domain_min[2]};
   const double reach = (split.hybrid.adaptive.margin_cells + 0.5) * h;
-  n_cells_beyond_limit = 0;
-  for (const dealii::Point<3>& c : fe_solver->cells_nearing_failure(split.hybrid.adaptive.threshold))
+  std::uint64_t beyond = 0;
+  std::vector<dealii::Point<3>> places =
+    fe_solver->cells_nearing_failure(split.hybrid.adaptive.threshold);
+  // Interface nodes that moved too far from their grid nodes, from every rank.
+  std::vector<double> moved;
+  for (const fem::NodeRecord& node : fe_solver->interface_nodes())
+    if (fe_solver->displacement(node).norm() > split.hybrid.adaptive.interface_displacement * h)
+      moved.insert(moved.end(), {node.position[0], node.position[1], node.position[2]});
+  for (const std::vector<double>& theirs : dealii::Utilities::MPI::all_gather(comm, moved))
+    for (std::size_t i = 0; i + 2 < theirs.size(); i += 3)
+      places.emplace_back(theirs[i], theirs[i + 1], theirs[i + 2]);
+  for (const dealii::Point<3>& c : places)
   {
     bool inside_limit = true;
     for (int d = 0; d < 3; ++d)
-      inside_limit = inside_limit && c[d] > split.limit_min[d] && c[d] < split.limit_max[d];
+      inside_limit = inside_limit && c[d] >= split.limit_min[d] - 1e-9 * h &&
+                     c[d] <= split.limit_max[d] + 1e-9 * h;
     if (!inside_limit)
     {
-      ++n_cells_beyond_limit;
+      ++beyond;
       continue;
     }
+    bool cut_by_limit = false;
     for (int d = 0; d < 3; ++d)
     {
       const double below = origin[d] + h * std::floor((c[d] - reach - origin[d]) / h + 1e-9);
       const double above = origin[d] + h * std::ceil((c[d] + reach - origin[d]) / h - 1e-9);
+      // The limit cuts what the place needs, unless it is the body's own face.
+      cut_by_limit = cut_by_limit ||
+                     (below < split.limit_min[d] - 1e-9 * h &&
+                      split.limit_min[d] > split.fe.slab_min[d] + 1e-9 * h) ||
+                     (above > split.limit_max[d] + 1e-9 * h &&
+                      split.limit_max[d] < split.fe.slab_max[d] - 1e-9 * h);
       lo[d] = std::min(lo[d], std::max(below, split.limit_min[d]));
       hi[d] = std::max(hi[d], std::min(above, split.limit_max[d]));
     }
+    beyond += cut_by_limit;
   }
+  n_cells_beyond_limit = std::max(n_cells_beyond_limit, beyond);
+  check_seconds +=
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return {lo, hi};
 }
 
@@ -63,6 +89,7 @@ void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
         new_min[d] < split.limit_min[d] - 1e-9 * h || new_max[d] > split.limit_max[d] + 1e-9 * h)
       throw std::logic_error("adaptive zone: the new zone must hold the old one within the limit");
 
+  const auto start = std::chrono::steady_clock::now();
   ZoneConversion record;
   record.time = mpm_solver->time();
   record.mpm_step = mpm_solver->step_count();
@@ -157,6 +184,8 @@ void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
   record.mass = sums[0] * split.fe.density;
   record.energy_after = energy_of_both(mpm_solver->diagnostics(), fe_solver->diagnostics());
   record.momentum_after = total_momentum();
+  record.seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   zone_conversions.push_back(record);
 }
 } // namespace vulnus::coupling

@@ -332,6 +332,7 @@ HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters&
       split.limit_max[d] = zone.box_max[d] + h * std::min(n_reach, above);
     }
     fe.has_focus = true;
+    fe.track_failure_proximity = true;
     fe.focus_min = split.limit_min;
     fe.focus_max = split.limit_max;
   }

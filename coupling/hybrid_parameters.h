@@ -29,6 +29,9 @@ struct AdaptiveZoneParameters
   /// A cell converts when a quadrature point reaches this fraction of the failure criterion
   /// (matrix shear over its limit, fiber stretch - 1 over limit - 1) or has failed.
   double threshold = 0.5;
+  /// A cell also converts when an interface node of it has moved this fraction of a grid
+  /// cell (the shared grid node stays put: the coupling assumes small interface motion).
+  double interface_displacement = 0.1;
   /// The zone grows to hold a converting cell with this many cells around it.
   unsigned int margin_cells = 2;
   /// How far beyond its start the zone may grow on every side, m; the far-field mesh has

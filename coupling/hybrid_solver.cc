@@ -144,6 +144,9 @@ void HybridSolver::advance()
     double window = fe_solver->next_time_step();
     if (split.hybrid.substeps > 0)
       window = std::min(window, split.hybrid.substeps * mpm_solver->stable_time_step());
+    // The adaptive zone looks at the far field at window ends: no window may outlast a check.
+    if (adaptive.enabled)
+      window = std::min(window, adaptive.check_interval * mpm_solver->stable_time_step());
     window_start = t;
     window_end = std::min(t + window, end);
     window_open = true;

@@ -53,6 +53,7 @@ struct ZoneConversion
   double energy_before = 0.0, energy_after = 0.0;
   Eigen::Vector3d momentum_before = Eigen::Vector3d::Zero();
   Eigen::Vector3d momentum_after = Eigen::Vector3d::Zero();
+  double seconds = 0.0; ///< wall-clock time of the conversion
 };
 
 class HybridSolver : public mpm::InterfacePartner
@@ -116,9 +117,18 @@ public:
       sum += c.volume;
     return sum;
   }
-  /// Cells nearing failure at the last check that lie beyond the zone's limit (they stay
-  /// finite elements).
+  /// The most cells nearing failure and interface nodes moved too far, at one check, that
+  /// the zone could not take in with their margin because its limit was in the way.
   std::uint64_t cells_beyond_limit() const { return n_cells_beyond_limit; }
+  /// Wall-clock seconds spent checking where the zone must grow, and converting.
+  double zone_check_seconds() const { return check_seconds; }
+  double zone_conversion_seconds() const
+  {
+    double sum = 0.0;
+    for (const ZoneConversion& c : zone_conversions)
+      sum += c.seconds;
+    return sum;
+  }
   /// Collective: grows the zone to [new_min, new_max] (on grid nodes, holding the zone, within
   /// the limit): the far-field cells inside become material points of the split body, the
   /// far field is rebuilt without them and takes over the rest of its state, and the
@@ -181,5 +191,6 @@ private:
   std::vector<ZoneConversion> zone_conversions;
   std::uint64_t n_cells_beyond_limit = 0;
   std::uint64_t last_zone_check = 0; ///< MPM step of the last check
+  double check_seconds = 0.0;
 };
 } // namespace vulnus::coupling

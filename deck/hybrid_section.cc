@@ -29,13 +29,18 @@ void declare_hybrid_section(EntryTable& table)
                 "A cell converts when one of its quadrature points reaches this fraction of the "
                 "failure limits (matrix shear / limit, (fiber stretch - 1) / (limit - 1)) or "
                 "has failed.");
+  table.declare("Adaptive zone interface displacement", "0.1", Patterns::Double(0.0, 10.0),
+                "The zone also grows where an interface node has moved this fraction of a "
+                "grid cell (the validity monitor warns at 0.25; a window of the far field moves "
+                "it by up to a few hundredths).");
   table.declare("Adaptive zone margin", "2", Patterns::Integer(0, 1000),
                 "Cells of tissue the grown zone keeps around a converting cell.");
   table.declare("Adaptive zone reach", "0.01", Patterns::Double(0.0, 10.0),
                 "How far the zone may grow beyond its start on every side [m]; the far field "
                 "has the grid's cells there.");
   table.declare("Adaptive zone check interval", "10", Patterns::Integer(1, 100000),
-                "MPM steps between conversion checks (each at the end of an FE window).");
+                "MPM steps between conversion checks; an FE window spans at most this many "
+                "(multi step).");
   table.declare("Body", "", Patterns::Anything(),
                 "Body split into zone and far field; empty: the only deformable box body "
                 "that is not the projectile.");
@@ -67,6 +72,7 @@ void parse_hybrid_section(dealii::ParameterHandler& prm, coupling::HybridParamet
   hybrid.path_margin = prm.get_double("Zone margin");
   hybrid.adaptive.enabled = prm.get_bool("Adaptive zone");
   hybrid.adaptive.threshold = prm.get_double("Adaptive zone threshold");
+  hybrid.adaptive.interface_displacement = prm.get_double("Adaptive zone interface displacement");
   hybrid.adaptive.margin_cells = static_cast<unsigned int>(prm.get_integer("Adaptive zone margin"));
   hybrid.adaptive.reach = prm.get_double("Adaptive zone reach");
   hybrid.adaptive.check_interval =

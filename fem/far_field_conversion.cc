@@ -1,10 +1,9 @@
-// The far field's side of an adaptive MPM zone: which cells near failure, the quadrature
-// points of cells about to become material points, and the hand-over of the state to a mesh
+// The far field's side of an adaptive MPM zone: which cells near failure (kept by every force
+// evaluation), the material points of cells about to convert, and the hand-over of the state to a mesh
 // with a larger hole whose other cells are the same (fine region of the mesh, FeSceneParameters
 // focus), matched by position.
 #include "fem/far_field_data.h"
 #include "fem/tensor_conversion.h"
-#include "materials/two_surface_failure.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -61,44 +60,13 @@ void evaluate_cell(const FEValues<3>& fe_values, const std::vector<types::global
 std::vector<Point<3>> FarFieldSolver::cells_nearing_failure(const double threshold) const
 {
   const Data& d = *data;
+  AssertThrow(d.prm.track_failure_proximity,
+              ExcMessage("cells_nearing_failure needs FeSceneParameters::track_failure_proximity"));
   std::vector<double> mine;
-  const materials::FailureParameters* criterion = d.material->failure_criterion();
-  if (criterion != nullptr && criterion->enabled)
-  {
-    Data::Vector u(d.owned_dofs, d.relevant_dofs, d.comm);
-    u = d.displacement;
-    FEValues<3> fe_values(d.mapping, d.fe, d.quadrature, update_values | update_gradients);
-    std::vector<types::global_dof_index> dofs(d.fe.n_dofs_per_cell());
-    CellKinematics k;
-    const bool fibers = d.material->uses_fibers();
-    for (const auto& cell : d.dof_handler.active_cell_iterators())
-    {
-      if (!cell->is_locally_owned())
-        continue;
-      fe_values.reinit(cell);
-      cell->get_dof_indices(dofs);
-      evaluate_cell(fe_values, dofs, u, u, d.fe, k);
-      const std::size_t first = std::size_t(cell->active_cell_index()) * d.n_q_points;
-      double measure = 0.0;
-      for (unsigned int q = 0; q < d.n_q_points; ++q)
-      {
-        if (d.committed_states[first + q].failure != materials::intact)
-        {
-          measure = std::numeric_limits<double>::infinity();
-          break;
-        }
-        const Eigen::Matrix3d F = to_eigen(k.F[q]);
-        measure = std::max(measure, materials::matrix_shear_at(*criterion, F) /
-                                      criterion->matrix_shear_limit);
-        if (fibers)
-          measure = std::max(measure, ((F * d.fiber_directions[first + q]).norm() - 1.0) /
-                                        (criterion->fiber_stretch_limit - 1.0));
-      }
-      if (measure >= threshold)
-        for (unsigned int c = 0; c < 3; ++c)
-          mine.push_back(cell->center()[c]);
-    }
-  }
+  for (const auto& cell : d.triangulation.active_cell_iterators())
+    if (cell->is_locally_owned() && d.cell_failure_proximity[cell->active_cell_index()] >= threshold)
+      for (unsigned int c = 0; c < 3; ++c)
+        mine.push_back(cell->center()[c]);
   std::vector<Point<3>> centres;
   for (const std::vector<double>& theirs : Utilities::MPI::all_gather(d.comm, mine))
     for (std::size_t i = 0; i + 2 < theirs.size(); i += 3)

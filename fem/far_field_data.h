@@ -115,6 +115,9 @@ struct FarFieldSolver::Data
   std::vector<dealii::Tensor<2, 3>> cell_stress; ///< by active cell index
   std::vector<unsigned char> cell_failure;       ///< max flag over the cell's points
   std::vector<double> cell_wave_speed;           ///< m/s
+  /// prm.track_failure_proximity: the largest over the cell's points of matrix shear bound
+  /// / limit and (fiber stretch - 1) / (limit - 1), infinite once a point has failed.
+  std::vector<double> cell_failure_proximity;
   std::vector<double> cell_size;                 ///< smallest vertex distance / degree, m
 
   /// Boundary forces at the current state and their integrals: over the last step for the

@@ -265,6 +265,7 @@ void build_point_history_and_lumped_mass(Data& d)
   d.cell_stress.assign(n_cells, Tensor<2, 3>());
   d.cell_failure.assign(n_cells, 0);
   d.cell_wave_speed.assign(n_cells, 0.0);
+  d.cell_failure_proximity.assign(n_cells, 0.0);
   d.cell_size.assign(n_cells, 0.0);
   FEValues<3> fe_values(d.mapping, d.fe, d.quadrature,
                         update_values | update_JxW_values | update_quadrature_points);

@@ -193,10 +193,11 @@ public:
   void set_interface_velocities(const std::vector<dealii::Tensor<1, 3>>& velocities);
 
   // --- adaptive zone (fem/far_field_conversion.cc) ---------------------------------------
-  /// Collective: the reference centres of the cells (every rank's, on every rank) with a
-  /// quadrature point at or above `threshold` of the failure criterion: a failed point, or
-  /// the larger of matrix shear / its limit and (fiber stretch - 1) / (limit - 1). Empty for
-  /// a material without failure criterion.
+  /// Collective: the reference centres of the cells (every rank's, on every rank) where a
+  /// quadrature point, at the last force evaluation, had failed or reached `threshold` of the
+  /// failure criterion: the larger of the matrix shear's upper bound (sqrt(2) |dev B| times
+  /// the measure's factor, at most 1.16 times the exact value) over its limit and (fiber
+  /// stretch - 1) / (limit - 1). Needs FeSceneParameters::track_failure_proximity.
   std::vector<dealii::Point<3>> cells_nearing_failure(double threshold) const;
   /// Material points for this rank's cells whose centre lies inside [box_min, box_max] (not
   /// collective): points_per_axis^3 per cell at the midpoints of equal sub-cells (the MPM

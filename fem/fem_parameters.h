@@ -95,6 +95,9 @@ struct FeSceneParameters
   /// an adaptive MPM zone may grow into): the cells there stay the same when the hole grows
   /// inside it. Without it the fine cells are the hole's own extent.
   bool has_focus = false;
+  /// Keep, per cell, how near its points are to failure (the adaptive zone's criterion,
+  /// FarFieldSolver::cells_nearing_failure), evaluated with every force evaluation.
+  bool track_failure_proximity = false;
   std::array<double, 3> focus_min{{0.0, 0.0, 0.0}};
   std::array<double, 3> focus_max{{0.0, 0.0, 0.0}};
 

@@ -3,12 +3,14 @@
 // speed; external forces (tractions, interface forces); energies and external power.
 #include "fem/far_field_data.h"
 #include "fem/tensor_conversion.h"
+#include "materials/two_surface_failure.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/vector.h>
 
 #include <cmath>
+#include <limits>
 #include <iostream>
 #include <stdexcept>
 
@@ -34,6 +36,11 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   bool inverted = false;
   std::string message;
 
+  const materials::FailureParameters* proximity_criterion =
+    prm.track_failure_proximity ? material->failure_criterion() : nullptr;
+  if (proximity_criterion != nullptr && !proximity_criterion->enabled)
+    proximity_criterion = nullptr;
+  const bool fibers = material->uses_fibers();
   internal_force_raw = 0.0;
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
@@ -47,7 +54,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
     const std::size_t first = std::size_t(k) * n_q_points;
     f_local = 0.0;
     Tensor<2, 3> stress_sum;
-    double volume = 0.0, c_max = 0.0;
+    double volume = 0.0, c_max = 0.0, proximity = 0.0;
     unsigned char flags = 0;
     for (unsigned int q = 0; q < n_q_points && !inverted; ++q)
     {
@@ -83,12 +90,24 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       volume += JxW;
       c_max = std::max(c_max, std::sqrt(response.p_wave_modulus * J / prm.density));
       flags |= state.failure;
+      if (proximity_criterion != nullptr)
+      {
+        const Eigen::Matrix3d Fe = to_eigen(F);
+        proximity = std::max(proximity, materials::matrix_shear_bound(*proximity_criterion, Fe) /
+                                          proximity_criterion->matrix_shear_limit);
+        if (fibers)
+          proximity = std::max(proximity, ((Fe * fiber_directions[first + q]).norm() - 1.0) /
+                                            (proximity_criterion->fiber_stretch_limit - 1.0));
+      }
     }
     if (inverted)
       break;
     cell_stress[k] = stress_sum / volume;
     cell_failure[k] = flags;
     cell_wave_speed[k] = c_max;
+    if (proximity_criterion != nullptr)
+      cell_failure_proximity[k] =
+        flags != materials::intact ? std::numeric_limits<double>::infinity() : proximity;
     for (unsigned int i = 0; i < n_dofs; ++i)
       f_values[i] = f_local(i);
     internal_force_raw.add(dofs, f_values);

@@ -2,6 +2,7 @@
 // interface energy error, failed far-field points.
 #include "simulator/hybrid_monitors.h"
 
+#include "mpm/binary_io.h"
 #include "mpm/solver.h"
 
 #include <deal.II/base/mpi.h>
@@ -34,7 +35,8 @@ double interface_displacement_over_cell(const coupling::HybridSolver& solver)
 }
 
 /// Mass fraction of the split body's points that moved more than half a cell out of the zone
-/// (material the far field also holds).
+/// into the far field's box (material the far field also holds; fragments beyond the slab's
+/// faces are not).
 double mass_fraction_outside_zone(const coupling::HybridSolver& solver)
 {
   const mpm::Solver& mpm_side = solver.mpm();
@@ -45,13 +47,16 @@ double mass_fraction_outside_zone(const coupling::HybridSolver& solver)
   for (std::size_t i = p.begin_of(split.coupled_body); i < p.end_of(split.coupled_body); ++i)
   {
     sums[0] += p.mass[i];
+    bool in_slab = true, in_zone = true;
     for (int d = 0; d < 3; ++d)
-      if (p.position[i][d] < split.hybrid.zone_min[d] - margin ||
-          p.position[i][d] > split.hybrid.zone_max[d] + margin)
-      {
-        sums[1] += p.mass[i];
-        break;
-      }
+    {
+      in_slab = in_slab && p.position[i][d] > split.fe.slab_min[d] &&
+                p.position[i][d] < split.fe.slab_max[d];
+      in_zone = in_zone && p.position[i][d] >= split.hybrid.zone_min[d] - margin &&
+                p.position[i][d] <= split.hybrid.zone_max[d] + margin;
+    }
+    if (in_slab && !in_zone)
+      sums[1] += p.mass[i];
   }
   mpm_side.rank_group().sum(sums, 2);
   return sums[0] > 0.0 ? sums[1] / sums[0] : 0.0;
@@ -115,5 +120,25 @@ nlohmann::json HybridMonitors::summary() const
   for (const MonitorReading& r : readings)
     j[r.name] = {{"peak", r.peak}, {"bound", r.bound}, {"exceeded", r.peak > r.bound}};
   return j;
+}
+
+void HybridMonitors::save(std::ostream& out) const
+{
+  for (const MonitorReading& r : readings)
+  {
+    mpm::binary::put(out, r.peak);
+    mpm::binary::put(out, static_cast<std::uint8_t>(r.warned));
+  }
+}
+
+void HybridMonitors::restore(std::istream& in)
+{
+  for (MonitorReading& r : readings)
+  {
+    std::uint8_t warned = 0;
+    mpm::binary::get(in, r.peak);
+    mpm::binary::get(in, warned);
+    r.warned = warned != 0;
+  }
 }
 } // namespace vulnus::simulator

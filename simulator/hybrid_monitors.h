@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,9 @@ public:
                                  bool all);
   /// Every monitor's peak and bound.
   nlohmann::json summary() const;
+  /// Peaks and warned flags, for checkpoints (a restart then reports what the run saw).
+  void save(std::ostream& out) const;
+  void restore(std::istream& in);
 
 private:
   std::vector<MonitorReading> readings;

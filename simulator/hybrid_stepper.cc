@@ -146,8 +146,9 @@ std::vector<std::string> HybridStepper::final_warnings() const
                                      : ", or set Hybrid/Adaptive zone = true"));
   if (solver.cells_beyond_limit() > 0)
     warnings.push_back("*** " + std::to_string(solver.cells_beyond_limit()) +
-                       " far-field cells near failure lie beyond the adaptive zone's reach and "
-                       "stayed finite elements; widen Hybrid/Adaptive zone reach");
+                       " far-field cells near failure or interface nodes moved too far lay at "
+                       "or beyond the adaptive zone's reach at one check; widen Hybrid/Adaptive "
+                       "zone reach");
   const std::vector<std::string> mpm_warnings = mpm_final_warnings(solver.mpm());
   warnings.insert(warnings.end(), mpm_warnings.begin(), mpm_warnings.end());
   return warnings;
@@ -218,6 +219,8 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                                           {"converted_volume_m3", solver.converted_volume()},
                                           {"energy_change_J", solver.conversion_energy_change()},
                                           {"cells_beyond_reach", solver.cells_beyond_limit()},
+                                          {"check_seconds", solver.zone_check_seconds()},
+                                          {"conversion_seconds", solver.zone_conversion_seconds()},
                                           {"limit_min_m", split.limit_min},
                                           {"limit_max_m", split.limit_max}};
   }
@@ -240,7 +243,11 @@ std::string HybridStepper::final_report(const nlohmann::json& summary) const
     << ledger.fe_steps << " FE steps to t = " << solver.time() << " s in "
     << summary["wall_seconds"].get<double>() << " s wall (MPM "
     << summary["hybrid"]["mpm_seconds"].get<double>() << " s, FE and coupling "
-    << mpm_side.phase_times().coupling << " s; MPM phases (s): "
+    << mpm_side.phase_times().coupling << " s";
+  if (solver.scene().hybrid.adaptive.enabled)
+    o << ", adaptive zone: " << solver.conversions().size() << " conversions "
+      << solver.zone_conversion_seconds() << " s, checks " << solver.zone_check_seconds() << " s";
+  o << "; MPM phases (s): "
     << phase_report(mpm_side.phase_times()) << ")\nenergy balance error "
     << summary["energy"]["balance_error"].get<double>() << ", interface energy error "
     << ledger.energy_error() << " J; failed points: matrix " << summary["failed"]["matrix"]

@@ -46,8 +46,17 @@ public:
   }
 
   bool can_checkpoint() const override { return true; }
-  void save(std::ostream& out) const override { solver.save(out); }
-  void restore(std::istream& in) override { solver.restore(in); }
+  void save(std::ostream& out) const override
+  {
+    solver.save(out);
+    monitors.save(out);
+  }
+  void restore(std::istream& in) override
+  {
+    solver.restore(in);
+    monitors.restore(in);
+    conversions_logged = solver.conversions().size();
+  }
 
 private:
   coupling::HybridSolver solver;

@@ -44,6 +44,55 @@ TEST(Decomposition, SplitsTheBodyIntoZoneAndFarField)
   EXPECT_EQ(solver.n_interface_nodes(), 125u - 27u);
 }
 
+// Zone = around path: the paper's bullet (radius 4.5 mm, along +y through a 10 mm slab) with a
+// 1.5 mm margin gives radius + one cell + margin = 7 mm on either side of the axis, through the
+// whole thickness; a margin off the grid widens to the next node.
+TEST(Decomposition, ZoneAroundThePathHoldsTheBulletRadiusCellAndMargin)
+{
+  mpm::SceneParameters s = block_scene({-0.025, -0.02, -0.025}, {0.025, 0.035, 0.025}, 1e-3);
+  s.bodies[0].box_min = {-0.025, 0.0, -0.025};
+  s.bodies[0].box_max = {0.025, 0.01, 0.025};
+  materials::MaterialParameters rigid;
+  rigid.model = "rigid";
+  s.materials.push_back({"steel", rigid});
+  mpm::BodyParameters bullet;
+  bullet.name = "bullet";
+  bullet.material = "steel";
+  bullet.shape = mpm::BodyShape::cylinder;
+  bullet.center = {0.0, -0.016, 0.0};
+  bullet.radius = 0.0045;
+  bullet.length = 0.015;
+  bullet.initial_velocity = {0.0, 150.0, 0.0};
+  bullet.is_projectile = true;
+  s.bodies.push_back(bullet);
+  HybridParameters hybrid = zone({0, 0, 0}, {0, 0, 0}, CouplingScheme::multi_step);
+  hybrid.zone_start = ZoneStart::around_path;
+  hybrid.path_margin = 0.0015;
+  HybridParameters resolved = resolve_zone(s, hybrid);
+  for (int d : {0, 2})
+  {
+    EXPECT_NEAR(resolved.zone_min[d], -0.007, 1e-12);
+    EXPECT_NEAR(resolved.zone_max[d], 0.007, 1e-12);
+  }
+  EXPECT_NEAR(resolved.zone_min[1], 0.0, 1e-12);
+  EXPECT_NEAR(resolved.zone_max[1], 0.01, 1e-12);
+  hybrid.path_margin = 0.0012;
+  resolved = resolve_zone(s, hybrid);
+  EXPECT_NEAR(resolved.zone_max[0], 0.007, 1e-12);
+  EXPECT_TRUE(check_decomposition(s, hybrid, uniform_far_field(1e-3)).empty());
+
+  // The adaptive zone's limit: the reach in whole cells, cut at the body's faces.
+  hybrid.adaptive.enabled = true;
+  hybrid.adaptive.reach = 0.0205;
+  const HybridScene split = decompose(s, hybrid, uniform_far_field(1e-3));
+  EXPECT_NEAR(split.limit_min[0], -0.025, 1e-12); // 7 + 21 cells would leave the body
+  EXPECT_NEAR(split.limit_max[2], 0.025, 1e-12);
+  EXPECT_NEAR(split.limit_max[1], 0.01, 1e-12);
+  EXPECT_TRUE(split.fe.has_focus && split.fe.track_failure_proximity);
+  hybrid.adaptive.reach = 0.0005;
+  EXPECT_NE(all_problems(s, hybrid).find("below one grid cell"), std::string::npos);
+}
+
 TEST(Decomposition, RefusesAZoneOffTheGridNodes)
 {
   const mpm::SceneParameters s = block_scene({0, 0, 0}, {0.012, 0.012, 0.012}, 1e-3);

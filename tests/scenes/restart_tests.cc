@@ -222,6 +222,36 @@ INSTANTIATE_TEST_SUITE_P(Integrators, HybridRestart,
                            return name;
                          });
 
+/// The adaptive-zone deck on stiff tissue (K = 100 MPa, rigid bullet): the zone first grows
+/// at step 85, before the first checkpoint (step 100).
+std::string adaptive_arguments(const std::string& extra)
+{
+  return "'" + source_dir() + "/inputs/paper/anisotropic_150ms_coarse_adaptive.prm' --threads 2" +
+         " --set 'Material bullet/Model=rigid' --set 'Time/End time=1e-4'" +
+         " --set 'Material tissue/Transversely isotropic hyperelastic/Bulk modulus=1e8'" +
+         " --set 'Output/Particle output interval=2e-5' --set 'Output/Checkpoint step interval=100' " +
+         extra;
+}
+
+// Killed after its zone has grown, the run restarts on the grown zone's far field and
+// continues (with its later conversions) bit for bit.
+TEST(AdaptiveZoneRestart, KilledAfterAConversionContinuesBitForBit)
+{
+  ScratchDirectory scratch("adaptive_restart");
+  const CommandResult r = reference_then_killed_and_restarted(scratch.path, adaptive_arguments);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.out.find("restarted from"), std::string::npos);
+  const nlohmann::json summary =
+    nlohmann::json::parse(read_text(scratch.path / "reference" / "summary.json"));
+  const nlohmann::json& conversions = summary["hybrid"]["adaptive_zone"]["conversions"];
+  ASSERT_GE(conversions.size(), 2u);
+  EXPECT_LT(conversions[0]["mpm_step"].get<int>(), 100); // before the checkpoint
+  EXPECT_GT(conversions.back()["mpm_step"].get<int>(), 100); // and after it
+  expect_identical_runs(scratch.path / "reference", scratch.path / "killed");
+  EXPECT_EQ(read_text(scratch.path / "reference" / "fe_mesh.xdmf"),
+            read_text(scratch.path / "killed" / "fe_mesh.xdmf"));
+}
+
 /// The pure-FE pulse deck with a checkpoint every 5 steps.
 std::string fe_arguments(const std::string& extra = "")
 {
