@@ -31,26 +31,38 @@ bool is_rigid(const mpm::SceneParameters& scene, const mpm::BodyParameters& body
   return false;
 }
 
-/// The projectile's axis must stay at least radius + one cell inside the zone wherever it
-/// crosses the slab (the zone may end at a slab face).
-void check_bullet_path(const mpm::SceneParameters& scene, const mpm::BodyParameters& slab,
-                       const HybridParameters& hybrid, std::vector<ParameterProblem>& problems)
+/// The projectile, with the start and direction of its flight and its radius plus one cell;
+/// null without a projectile.
+const mpm::BodyParameters* flight_line(const mpm::SceneParameters& scene, mpm::Vector3& start, mpm::Vector3& direction,
+                 double& reach)
 {
   for (const mpm::BodyParameters& body : scene.bodies)
   {
     if (!body.is_projectile)
       continue;
-    const double reach = (body.shape == mpm::BodyShape::box
-                            ? 0.5 * (body.box_max - body.box_min).norm()
-                            : body.radius) +
-                         scene.cell_size;
-    const mpm::Vector3 start = body.shape == mpm::BodyShape::box
-                                 ? mpm::Vector3(0.5 * (body.box_min + body.box_max))
-                                 : body.center;
-    mpm::Vector3 direction = body.initial_velocity;
+    reach = (body.shape == mpm::BodyShape::box ? 0.5 * (body.box_max - body.box_min).norm()
+                                               : body.radius) +
+            scene.cell_size;
+    start = body.shape == mpm::BodyShape::box ? mpm::Vector3(0.5 * (body.box_min + body.box_max))
+                                              : body.center;
+    direction = body.initial_velocity;
     if (direction.norm() == 0.0)
       direction = body.axis;
     direction.normalize();
+    return &body;
+  }
+  return nullptr;
+}
+
+/// The projectile's axis must stay at least radius + one cell inside the zone wherever it
+/// crosses the slab (the zone may end at a slab face).
+void check_bullet_path(const mpm::SceneParameters& scene, const mpm::BodyParameters& slab,
+                       const HybridParameters& hybrid, std::vector<ParameterProblem>& problems)
+{
+  mpm::Vector3 start, direction;
+  double reach = 0.0;
+  if (const mpm::BodyParameters* projectile = flight_line(scene, start, direction, reach))
+  {
     // Sample the flight line across the slab box.
     const double span = (slab.box_max - slab.box_min).norm() + (start - slab.box_min).norm() +
                         (start - slab.box_max).norm();
@@ -71,7 +83,7 @@ void check_bullet_path(const mpm::SceneParameters& scene, const mpm::BodyParamet
             (!upper_open && c[d] + reach > hybrid.zone_max[d]))
         {
           std::ostringstream s;
-          s << "the path of projectile '" << body.name << "' at (" << c[0] << ", " << c[1]
+          s << "the path of projectile '" << projectile->name << "' at (" << c[0] << ", " << c[1]
             << ", " << c[2] << ") m comes closer than its radius plus one cell to the zone's "
             << axis_name(d) << " bounds";
           problems.push_back({{"zone_min", "zone_max"}, s.str(),
@@ -82,6 +94,7 @@ void check_bullet_path(const mpm::SceneParameters& scene, const mpm::BodyParamet
     }
   }
 }
+
 /// The grid node at or beyond x, outwards (down for a lower bound), within [lo, hi].
 double node_outwards(const double x, const double origin, const double h, const bool lower,
                      const double lo, const double hi)
@@ -94,28 +107,6 @@ double node_outwards(const double x, const double origin, const double h, const 
     node -= h;
   return node;
 }
-
-/// Start and direction of the projectile's flight; false without a projectile.
-bool flight_line(const mpm::SceneParameters& scene, mpm::Vector3& start, mpm::Vector3& direction,
-                 double& reach)
-{
-  for (const mpm::BodyParameters& body : scene.bodies)
-  {
-    if (!body.is_projectile)
-      continue;
-    reach = (body.shape == mpm::BodyShape::box ? 0.5 * (body.box_max - body.box_min).norm()
-                                               : body.radius) +
-            scene.cell_size;
-    start = body.shape == mpm::BodyShape::box ? mpm::Vector3(0.5 * (body.box_min + body.box_max))
-                                              : body.center;
-    direction = body.initial_velocity;
-    if (direction.norm() == 0.0)
-      direction = body.axis;
-    direction.normalize();
-    return true;
-  }
-  return false;
-}
 } // namespace
 
 HybridParameters resolve_zone(const mpm::SceneParameters& scene, const HybridParameters& hybrid)
@@ -125,7 +116,7 @@ HybridParameters resolve_zone(const mpm::SceneParameters& scene, const HybridPar
   mpm::Vector3 start, direction;
   double reach = 0.0;
   if (hybrid.zone_start != ZoneStart::around_path || index < 0 ||
-      !flight_line(scene, start, direction, reach))
+      flight_line(scene, start, direction, reach) == nullptr)
     return resolved;
   const mpm::BodyParameters& slab = scene.bodies[static_cast<std::size_t>(index)];
   reach += hybrid.path_margin;

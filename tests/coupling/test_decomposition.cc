@@ -20,6 +20,26 @@ std::string all_problems(const mpm::SceneParameters& s, const HybridParameters& 
   return text;
 }
 
+/// A slab [-w, w] x [0, 10 mm] x [-w, w] and the paper's bullet (radius 4.5 mm) flying along +y
+/// through its centre.
+mpm::SceneParameters slab_and_bullet(const double w)
+{
+  mpm::SceneParameters s = block_scene({-w, -0.02, -w}, {w, 0.035, w}, 1e-3);
+  s.bodies[0].box_min = {-w, 0.0, -w};
+  s.bodies[0].box_max = {w, 0.01, w};
+  mpm::BodyParameters bullet;
+  bullet.name = "bullet";
+  bullet.material = "tissue";
+  bullet.shape = mpm::BodyShape::cylinder;
+  bullet.center = {0.0, -0.016, 0.0};
+  bullet.radius = 0.0045;
+  bullet.length = 0.015;
+  bullet.initial_velocity = {0.0, 150.0, 0.0};
+  bullet.is_projectile = true;
+  s.bodies.push_back(bullet);
+  return s;
+}
+
 TEST(Decomposition, SplitsTheBodyIntoZoneAndFarField)
 {
   mpm::SceneParameters s = block_scene({0, 0, 0}, {0.012, 0.012, 0.012}, 1e-3);
@@ -49,22 +69,7 @@ TEST(Decomposition, SplitsTheBodyIntoZoneAndFarField)
 // whole thickness; a margin off the grid widens to the next node.
 TEST(Decomposition, ZoneAroundThePathHoldsTheBulletRadiusCellAndMargin)
 {
-  mpm::SceneParameters s = block_scene({-0.025, -0.02, -0.025}, {0.025, 0.035, 0.025}, 1e-3);
-  s.bodies[0].box_min = {-0.025, 0.0, -0.025};
-  s.bodies[0].box_max = {0.025, 0.01, 0.025};
-  materials::MaterialParameters rigid;
-  rigid.model = "rigid";
-  s.materials.push_back({"steel", rigid});
-  mpm::BodyParameters bullet;
-  bullet.name = "bullet";
-  bullet.material = "steel";
-  bullet.shape = mpm::BodyShape::cylinder;
-  bullet.center = {0.0, -0.016, 0.0};
-  bullet.radius = 0.0045;
-  bullet.length = 0.015;
-  bullet.initial_velocity = {0.0, 150.0, 0.0};
-  bullet.is_projectile = true;
-  s.bodies.push_back(bullet);
+  const mpm::SceneParameters s = slab_and_bullet(0.025);
   HybridParameters hybrid = zone({0, 0, 0}, {0, 0, 0}, CouplingScheme::multi_step);
   hybrid.zone_start = ZoneStart::around_path;
   hybrid.path_margin = 0.0015;
@@ -134,19 +139,7 @@ TEST(Decomposition, RefusesAnImplicitFarFieldWithTheSameStepScheme)
 
 TEST(Decomposition, RefusesAZoneThatMissesTheBulletPath)
 {
-  mpm::SceneParameters s = block_scene({-0.02, -0.02, -0.02}, {0.02, 0.03, 0.02}, 1e-3);
-  s.bodies[0].box_min = {-0.02, 0.0, -0.02};
-  s.bodies[0].box_max = {0.02, 0.01, 0.02};
-  mpm::BodyParameters bullet;
-  bullet.name = "bullet";
-  bullet.material = "tissue";
-  bullet.shape = mpm::BodyShape::cylinder;
-  bullet.center = {0.0, -0.012, 0.0};
-  bullet.radius = 0.0045;
-  bullet.length = 0.01;
-  bullet.initial_velocity = {0.0, 150.0, 0.0};
-  bullet.is_projectile = true;
-  s.bodies.push_back(bullet);
+  const mpm::SceneParameters s = slab_and_bullet(0.02);
   // 4.5 mm radius plus one cell needs |x|, |z| >= 5.5 mm of zone around the axis.
   EXPECT_EQ(all_problems(s, zone({-0.006, 0.0, -0.006}, {0.006, 0.01, 0.006},
                                  CouplingScheme::same_step)),
