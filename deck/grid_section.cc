@@ -29,8 +29,11 @@ void declare_grid_section(EntryTable& table)
                 "Upper corner x_max of the background grid domain, `x, y, z` [m].");
   table.declare("Cell size", "0.001", Patterns::Double(0.0),
                 "Edge length h of the cubic grid cells [m]; must be > 0. The paper uses 1 mm.");
-  table.declare("Shape function", "linear", Patterns::Selection("linear|gimp"),
-                "Grid shape functions: linear (tent) or gimp (generalized interpolation).");
+  table.declare("Shape function", "linear", Patterns::Selection("linear|gimp|cpdi"),
+                "Grid shape functions: linear (tent), gimp (uGIMP: a fixed box per point) or "
+                "cpdi (CPDI1: a parallelepiped per point that deforms with its F, for tissue "
+                "stretched beyond the point spacing; a domain reaching over a cell from its "
+                "point along an axis is shrunk to it).");
   table.declare("Update scheme", "MUSL", Patterns::Selection("USL|MUSL"),
                 "Stress update: USL (update stress last) or MUSL (modified USL, velocities "
                 "re-mapped to the grid before the stress update).");
@@ -84,8 +87,10 @@ void parse_grid_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   scene.domain_min = get_point(prm, "Domain min");
   scene.domain_max = get_point(prm, "Domain max");
   scene.cell_size = prm.get_double("Cell size");
-  scene.shape_function =
-      prm.get("Shape function") == "gimp" ? mpm::ShapeFunction::gimp : mpm::ShapeFunction::linear;
+  const std::string shape = prm.get("Shape function");
+  scene.shape_function = shape == "gimp"   ? mpm::ShapeFunction::gimp
+                         : shape == "cpdi" ? mpm::ShapeFunction::cpdi
+                                           : mpm::ShapeFunction::linear;
   scene.update_scheme =
       prm.get("Update scheme") == "USL" ? mpm::UpdateScheme::usl : mpm::UpdateScheme::musl;
   const std::string transfer = prm.get("Velocity transfer");

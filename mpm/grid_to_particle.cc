@@ -19,16 +19,16 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
                              const std::size_t b, const ShareRange range, const GridFields& fields,
                              Particles& particles, Vector3* momentum, Vector3* contested)
 {
-  constexpr int n = nodes_per_axis(shape);
+  constexpr int n_entries = stencil_entries(shape);
   const std::size_t n_bodies = particles.n_bodies();
   for (long p = range.begin; p < range.end; ++p)
   {
     Vector3 v_pic = Vector3::Zero();
     Vector3 dv = Vector3::Zero();
-    std::array<std::int32_t, n * n * n> slots;
-    std::array<double, n * n * n> weights;
+    std::array<std::int32_t, n_entries> slots;
+    std::array<double, n_entries> weights;
     int n_nodes = 0;
-    for_each_node<shape>(grid, lp, particles.position[p],
+    for_each_node<shape>(grid, lp, particles.position[p], particles.deformation_gradient[p],
                          [&](const std::int64_t key, const double w, const Vector3&)
                          {
                            const std::int32_t slot = grid.slot(key);
@@ -139,10 +139,11 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
 #pragma omp parallel for schedule(static)
                  for (long p = begin; p < end; ++p)
                  {
+                   Tensor2& F = particles.deformation_gradient[p];
                    Tensor2 L = Tensor2::Zero();
                    Vector3 v = Vector3::Zero();
                    for_each_node<shape>(
-                       grid, lp, particles.position[p],
+                       grid, lp, particles.position[p], F,
                        [&](const std::int64_t key, const double w, const Vector3& grad_w)
                        {
                          const std::size_t e = grid.slot(key) * n_bodies + b;
@@ -155,7 +156,6 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    // v + dt f / m never reaches the scatter through it.
                    if (affine)
                      particles.affine_velocity[p] = L.cast<float>();
-                   Tensor2& F = particles.deformation_gradient[p];
                    const double J_old = volumetric_rate ? F.determinant() : 0.0;
                    if (particles.failure[p] == materials::total_failure)
                    {

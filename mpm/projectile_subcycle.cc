@@ -40,7 +40,7 @@ std::vector<Vector3> contact_force_on_points(const Grid& grid, const TransferSet
                for (long p = begin; p < end; ++p)
                {
                  Vector3 change = Vector3::Zero();
-                 for_each_node<shape>(grid, lp, particles.position[p],
+                 for_each_node<shape>(grid, lp, particles.position[p], particles.deformation_gradient[p],
                                       [&](const std::int64_t key, const double w, const Vector3&)
                                       {
                                         const std::int32_t slot = grid.slot(key);
@@ -62,7 +62,7 @@ void ProjectileSubcycle::add_point_forces(const Particles& projectile,
              {
                constexpr ShapeFunction shape = decltype(shape_constant)::value;
                for (std::size_t p = 0; p < projectile.size(); ++p)
-                 for_each_node<shape>(grid, lp, projectile.position[p],
+                 for_each_node<shape>(grid, lp, projectile.position[p], projectile.deformation_gradient[p],
                                       [&](const std::int64_t key, const double w, const Vector3&)
                                       { fields.data[grid.slot(key)].force += w * point_force[p]; });
              });

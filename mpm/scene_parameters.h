@@ -12,7 +12,8 @@ using scene::Vector3;
 enum class ShapeFunction
 {
   linear,
-  gimp
+  gimp, ///< uGIMP: a fixed box per point
+  cpdi  ///< CPDI1: a parallelepiped per point that deforms with its F
 };
 
 enum class UpdateScheme

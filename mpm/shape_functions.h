@@ -1,10 +1,15 @@
-// Separable MPM shape functions evaluated per particle: linear (tent, 2 nodes per axis) and
-// uGIMP (generalized interpolation with a constant particle half-size, 3 nodes per axis).
-// Header-only so the transfer kernels inline them.
+// MPM shape functions evaluated per particle: linear (tent, 2 nodes per axis), uGIMP
+// (generalized interpolation with a constant particle half-size, 3 nodes per axis) and CPDI1
+// (the particle's domain a parallelepiped that deforms with it; Sadeghirad, Brannon and
+// Burghardt 2011). Header-only so the transfer kernels inline them.
 #pragma once
 
 #include "mpm/scene_parameters.h"
 
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -83,9 +88,44 @@ inline void gimp_axis_weights(const double s, const double lp, const double inve
   }
 }
 
-/// Number of nodes per axis touched by a particle.
+/// Number of nodes per axis touched by a particle (linear and GIMP; a CPDI point touches the
+/// nodes of its corners' cells).
 inline constexpr int nodes_per_axis(const ShapeFunction shape)
 {
   return shape == ShapeFunction::linear ? 2 : 3;
+}
+
+/// Most (node, weight) entries a point's stencil visits: CPDI visits the 8 nodes of each of
+/// its 8 corners' cells, shared nodes once per corner.
+inline constexpr int stencil_entries(const ShapeFunction shape)
+{
+  return shape == ShapeFunction::cpdi ? 64 : nodes_per_axis(shape) * nodes_per_axis(shape) *
+                                               nodes_per_axis(shape);
+}
+
+/// A CPDI corner reaches at most this many cells from its point along any axis, so the
+/// stencil spans the nodes GIMP's does (floor(s) - 1 .. floor(s) + 2) and the grid padding,
+/// the rank seams and the share seams need nothing more.
+inline constexpr double cpdi_reach_cells = 1.0;
+
+/// CPDI1 domain of a point, in cell units: the columns are the half-vectors r_k = F (lp e_k)
+/// of its parallelepiped (lp its reference half-size in cells). A domain stretched beyond the
+/// reach along some axis is shrunk uniformly to it (as Uintah's cpdi_lcrit does); one with
+/// det F <= 0, which no material state should have, falls back to the reference box.
+inline Eigen::Matrix3d cpdi_half_vectors(const Eigen::Matrix3d& F, const double lp)
+{
+  Eigen::Matrix3d r = lp * F;
+  if (!(F.determinant() > 0.0))
+    return lp * Eigen::Matrix3d::Identity();
+  const double extent = r.cwiseAbs().rowwise().sum().maxCoeff();
+  if (extent > cpdi_reach_cells)
+    r *= cpdi_reach_cells / extent;
+  return r;
+}
+
+/// Sign of corner c (0..7) along axis d: bit d of c set is +1.
+inline constexpr double corner_sign(const int c, const int d)
+{
+  return ((c >> d) & 1) ? 1.0 : -1.0;
 }
 } // namespace vulnus::mpm

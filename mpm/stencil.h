@@ -1,56 +1,123 @@
 // Visits the grid nodes a material point touches with their weight and weight gradient (and,
-// for visitors that take it, the node's offset x_i - x_p), for linear or uGIMP shape
-// functions (compile-time choice so the loops unroll).
+// for visitors that take it, the node's offset x_i - x_p), for linear, uGIMP or CPDI1 shape
+// functions (compile-time choice so the loops unroll). CPDI reads the point's deformation
+// gradient; the others ignore it.
 #pragma once
 
 #include "mpm/grid.h"
 #include "mpm/shape_functions.h"
 
+#include <Eigen/LU>
+
 #include <type_traits>
 
 namespace vulnus::mpm
 {
+namespace detail
+{
+template <class Visitor>
+inline void visit_node(const Grid& grid, const Vector3& s, const int i, const int j, const int k,
+                       const double weight, const Vector3& gradient, Visitor& visit)
+{
+  const std::int64_t key = grid.node_key(i, j, k);
+  if constexpr (std::is_invocable_v<Visitor, std::int64_t, double, const Vector3&, const Vector3&>)
+  {
+    const Vector3 offset(i - s[0], j - s[1], k - s[2]);
+    visit(key, weight, gradient, (grid.cell_size() * offset).eval());
+  }
+  else
+    visit(key, weight, gradient);
+}
+
+/// CPDI1: the point's parallelepiped x_p + sum_k xi_k r_k (xi in [-1, 1]^3) carries the
+/// trilinear interpolant of each node's tent function through its 8 corners, so the weight is
+/// the corners' mean, w_i = 1/8 sum_c N_i(x_c), and the domain-averaged gradient is
+/// 1/8 sum_c N_i(x_c) R^-T s_c (s_c the corner's signs, R = [r_1 r_2 r_3]).
+template <class Visitor>
+inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3& x,
+                               const Eigen::Matrix3d& F, Visitor& visit)
+{
+  const Eigen::Matrix3d r = cpdi_half_vectors(F, lp);
+  const Eigen::Matrix3d gradient_map = r.inverse().transpose() * (0.125 * grid.inverse_cell_size());
+  const Vector3 s = grid.to_cell_units(x);
+  for (int c = 0; c < 8; ++c)
+  {
+    const Vector3 sign(corner_sign(c, 0), corner_sign(c, 1), corner_sign(c, 2));
+    const Vector3 corner = s + r * sign;
+    const Vector3 corner_gradient = gradient_map * sign;
+    AxisWeights w[3];
+    for (int d = 0; d < 3; ++d)
+      linear_axis_weights(corner[d], 1.0, w[d]);
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+        {
+          const double N = w[0].value[i] * w[1].value[j] * w[2].value[k];
+          if (N == 0.0)
+            continue;
+          visit_node(grid, s, w[0].first_node + i, w[1].first_node + j, w[2].first_node + k,
+                     0.125 * N, (N * corner_gradient).eval(), visit);
+        }
+  }
+}
+} // namespace detail
+
+/// The first node of each corner's cell of a CPDI point (the nodes it may touch are the
+/// 2 x 2 x 2 from each), for the node marking.
+template <class Visit>
+inline void for_each_cpdi_corner_cell(const Grid& grid, const double lp, const Vector3& x,
+                                      const Eigen::Matrix3d& F, Visit&& visit)
+{
+  const Eigen::Matrix3d r = cpdi_half_vectors(F, lp);
+  const Vector3 s = grid.to_cell_units(x);
+  for (int c = 0; c < 8; ++c)
+  {
+    const Vector3 corner = s + r * Vector3(corner_sign(c, 0), corner_sign(c, 1), corner_sign(c, 2));
+    visit(first_stencil_node(corner[0], 0.0), first_stencil_node(corner[1], 0.0),
+          first_stencil_node(corner[2], 0.0));
+  }
+}
+
 template <ShapeFunction shape, class Visitor>
 inline void for_each_node(const Grid& grid, const double half_size_cells, const Vector3& x,
-                          Visitor&& visit)
+                          const Eigen::Matrix3d& F, Visitor&& visit)
 {
-  constexpr int n = nodes_per_axis(shape);
-  const Vector3 s = grid.to_cell_units(x);
-  const double inverse_h = grid.inverse_cell_size();
-  AxisWeights w[3];
-  for (int d = 0; d < 3; ++d)
+  if constexpr (shape == ShapeFunction::cpdi)
   {
-    if constexpr (shape == ShapeFunction::linear)
-      linear_axis_weights(s[d], inverse_h, w[d]);
-    else
-      gimp_axis_weights(s[d], half_size_cells, inverse_h, w[d]);
+    detail::for_each_cpdi_node(grid, half_size_cells, x, F, visit);
+    return;
   }
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
+  else
+  {
+    constexpr int n = nodes_per_axis(shape);
+    const Vector3 s = grid.to_cell_units(x);
+    const double inverse_h = grid.inverse_cell_size();
+    AxisWeights w[3];
+    for (int d = 0; d < 3; ++d)
     {
-      const double wjk = w[1].value[j] * w[2].value[k];
-      const double djk = w[1].derivative[j] * w[2].value[k];
-      const double wjdk = w[1].value[j] * w[2].derivative[k];
-      for (int i = 0; i < n; ++i)
-      {
-        const double weight = w[0].value[i] * wjk;
-        if (weight == 0.0 && w[0].derivative[i] == 0.0)
-          continue;
-        const Vector3 gradient(w[0].derivative[i] * wjk, w[0].value[i] * djk,
-                               w[0].value[i] * wjdk);
-        const std::int64_t key =
-            grid.node_key(w[0].first_node + i, w[1].first_node + j, w[2].first_node + k);
-        if constexpr (std::is_invocable_v<Visitor, std::int64_t, double, const Vector3&,
-                                          const Vector3&>)
-        {
-          const Vector3 offset(w[0].first_node + i - s[0], w[1].first_node + j - s[1],
-                               w[2].first_node + k - s[2]);
-          visit(key, weight, gradient, (grid.cell_size() * offset).eval());
-        }
-        else
-          visit(key, weight, gradient);
-      }
+      if constexpr (shape == ShapeFunction::linear)
+        linear_axis_weights(s[d], inverse_h, w[d]);
+      else
+        gimp_axis_weights(s[d], half_size_cells, inverse_h, w[d]);
     }
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+      {
+        const double wjk = w[1].value[j] * w[2].value[k];
+        const double djk = w[1].derivative[j] * w[2].value[k];
+        const double wjdk = w[1].value[j] * w[2].derivative[k];
+        for (int i = 0; i < n; ++i)
+        {
+          const double weight = w[0].value[i] * wjk;
+          if (weight == 0.0 && w[0].derivative[i] == 0.0)
+            continue;
+          const Vector3 gradient(w[0].derivative[i] * wjk, w[0].value[i] * djk,
+                                 w[0].value[i] * wjdk);
+          detail::visit_node(grid, s, w[0].first_node + i, w[1].first_node + j,
+                             w[2].first_node + k, weight, gradient, visit);
+        }
+      }
+  }
 }
 
 /// Runtime dispatch helper: calls f with the shape as a compile-time constant.
@@ -59,7 +126,9 @@ inline void with_shape(const ShapeFunction shape, F&& f)
 {
   if (shape == ShapeFunction::linear)
     f(std::integral_constant<ShapeFunction, ShapeFunction::linear>());
-  else
+  else if (shape == ShapeFunction::gimp)
     f(std::integral_constant<ShapeFunction, ShapeFunction::gimp>());
+  else
+    f(std::integral_constant<ShapeFunction, ShapeFunction::cpdi>());
 }
 } // namespace vulnus::mpm

@@ -1,5 +1,5 @@
 // MPM throughput of a deck (default: the coarse anisotropic 150 m/s paper scene): particle-
-// steps per second and seconds per phase, for 1 and 2 threads and linear and GIMP shape
+// steps per second and seconds per phase, for 1 and 2 threads and linear, GIMP and CPDI shape
 // functions, and resident memory per particle. All configurations in one run, so the ratios
 // compare like with like on a shared machine.
 #include "deck/deck_reader.h"
@@ -301,21 +301,25 @@ int main(int argc, char** argv)
               "grid", "contact", "G2P", "stress", "other", "total", "B/point");
   std::printf("%-16s %8s %8s %8s %8s %8s %8s %8s %8s %8s\n", "", "", "ns/pt-st", "", "", "", "",
               "", "", "(RSS)");
-  Measurement linear[2], gimp[2];
+  Measurement linear[2], gimp[2], cpdi[2];
   for (int t = 1; t <= 2; ++t)
   {
     linear[t - 1] = measure(parameters.scene, t, mpm::ShapeFunction::linear, warmup, steps);
     print_row(t == 1 ? "linear, 1 thr" : "linear, 2 thr", linear[t - 1], t == 1);
     gimp[t - 1] = measure(parameters.scene, t, mpm::ShapeFunction::gimp, warmup, steps);
     print_row(t == 1 ? "GIMP, 1 thr" : "GIMP, 2 thr", gimp[t - 1], false);
+    cpdi[t - 1] = measure(parameters.scene, t, mpm::ShapeFunction::cpdi, warmup, steps);
+    print_row(t == 1 ? "CPDI, 1 thr" : "CPDI, 2 thr", cpdi[t - 1], false);
   }
   std::printf("points %zu\n", linear[0].points);
-  std::printf("2 threads / 1 thread: linear %.2f, GIMP %.2f\n",
+  std::printf("2 threads / 1 thread: linear %.2f, GIMP %.2f, CPDI %.2f\n",
               linear[1].point_steps_per_second / linear[0].point_steps_per_second,
-              gimp[1].point_steps_per_second / gimp[0].point_steps_per_second);
+              gimp[1].point_steps_per_second / gimp[0].point_steps_per_second,
+              cpdi[1].point_steps_per_second / cpdi[0].point_steps_per_second);
   report_thread_scaling(parameters.scene, warmup, steps, repeats);
-  std::printf("GIMP / linear (2 threads): %.2f\n",
-              gimp[1].point_steps_per_second / linear[1].point_steps_per_second);
+  std::printf("GIMP / linear (2 threads): %.2f, CPDI / linear: %.2f\n",
+              gimp[1].point_steps_per_second / linear[1].point_steps_per_second,
+              cpdi[1].point_steps_per_second / linear[1].point_steps_per_second);
   std::printf("resident memory of the first scene: %.0f B/point (growth of the resident set over "
               "building it and its warm-up steps)\n",
               linear[0].resident_bytes_per_point);

@@ -98,11 +98,30 @@ Scene random_scene(const ShapeFunction shape)
   return s;
 }
 
-/// Weights and gradients of the n^3 nodes of x (some may be zero), by the tensor product of
-/// the 1D functions.
+/// Weights and gradients of the nodes of x (some may be zero): for linear and GIMP by the
+/// tensor product of the 1D functions, for CPDI summed over the corners of the domain of F.
 std::map<std::int64_t, std::pair<double, Vector3>>
-stencil(const Grid& grid, const ShapeFunction shape, const double lp, const Vector3& x)
+stencil(const Grid& grid, const ShapeFunction shape, const double lp, const Vector3& x,
+        const Tensor2& F)
 {
+  std::map<std::int64_t, std::pair<double, Vector3>> nodes;
+  if (shape == ShapeFunction::cpdi)
+  {
+    const Tensor2 r = cpdi_half_vectors(F, lp);
+    for (int c = 0; c < 8; ++c)
+    {
+      const Vector3 sign(corner_sign(c, 0), corner_sign(c, 1), corner_sign(c, 2));
+      const Vector3 gradient = r.inverse().transpose() * sign / (8.0 * grid.cell_size());
+      for (const auto& [key, wg] : stencil(grid, ShapeFunction::linear, 0.0,
+                                           x + grid.cell_size() * r * sign, F))
+      {
+        auto& entry = nodes.try_emplace(key, 0.0, Vector3::Zero()).first->second;
+        entry.first += wg.first / 8.0;
+        entry.second += wg.first * gradient;
+      }
+    }
+    return nodes;
+  }
   const Vector3 s = grid.to_cell_units(x);
   AxisWeights w[3];
   for (int d = 0; d < 3; ++d)
@@ -110,7 +129,6 @@ stencil(const Grid& grid, const ShapeFunction shape, const double lp, const Vect
       linear_axis_weights(s[d], grid.inverse_cell_size(), w[d]);
     else
       gimp_axis_weights(s[d], lp, grid.inverse_cell_size(), w[d]);
-  std::map<std::int64_t, std::pair<double, Vector3>> nodes;
   const int n = nodes_per_axis(shape);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
@@ -165,7 +183,8 @@ void check_shares(const ShapeFunction shape, const int n_shares, const int team)
       const Tensor2 volume_stress = s.particles.reference_volume[p] *
                                     s.particles.deformation_gradient[p].determinant() *
                                     full_tensor(s.particles.stress[p]);
-      for (const auto& [key, wg] : stencil(s.grid, shape, 0.25, s.particles.position[p]))
+      for (const auto& [key, wg] : stencil(s.grid, shape, 0.25, s.particles.position[p],
+                                           s.particles.deformation_gradient[p]))
       {
         touched.insert(key);
         NodeBodyData& node = expected[key * 2 + b];
@@ -208,7 +227,8 @@ void check_shares(const ShapeFunction shape, const int n_shares, const int team)
   for (std::size_t b = 0; b < 2; ++b)
     for (std::size_t p = s.particles.begin_of(b); p < s.particles.end_of(b); ++p)
     {
-      const auto nodes = stencil(s.grid, shape, 0.25, s.particles.position[p]);
+      const auto nodes = stencil(s.grid, shape, 0.25, s.particles.position[p],
+                                 s.particles.deformation_gradient[p]);
       Vector3 v = Vector3::Zero();
       for (const auto& [key, wg] : nodes)
         v += wg.first * fields.velocity_new[s.grid.slot(key) * 2 + b];
@@ -234,4 +254,10 @@ TEST(PointShares, GimpScatterAndProjectionMatchASerialSum)
 {
   for (const auto& [n_shares, team] : {std::pair{1, 1}, {4, 1}, {4, 2}, {2, 2}})
     check_shares(ShapeFunction::gimp, n_shares, team);
+}
+
+TEST(PointShares, CpdiScatterAndProjectionMatchASerialSum)
+{
+  for (const auto& [n_shares, team] : {std::pair{1, 1}, {4, 1}, {4, 2}, {2, 2}, {3, 3}})
+    check_shares(ShapeFunction::cpdi, n_shares, team);
 }
