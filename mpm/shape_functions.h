@@ -95,8 +95,8 @@ inline constexpr int nodes_per_axis(const ShapeFunction shape)
   return shape == ShapeFunction::linear ? 2 : 3;
 }
 
-/// Most (node, weight) entries a point's stencil visits: CPDI visits the 8 nodes of each of
-/// its 8 corners' cells, shared nodes once per corner.
+/// Most (node, weight) entries a point's stencil visits: a CPDI point's corners stay within a
+/// cell of it, so its nodes lie in a 4 x 4 x 4 block.
 inline constexpr int stencil_entries(const ShapeFunction shape)
 {
   return shape == ShapeFunction::cpdi ? 64 : nodes_per_axis(shape) * nodes_per_axis(shape) *
@@ -110,16 +110,18 @@ inline constexpr double cpdi_reach_cells = 1.0;
 
 /// CPDI1 domain of a point, in cell units: the columns are the half-vectors r_k = F (lp e_k)
 /// of its parallelepiped (lp its reference half-size in cells). A domain stretched beyond the
-/// reach along some axis is shrunk uniformly to it (as Uintah's cpdi_lcrit does); one with
+/// reach along some axis is shrunk uniformly to just inside it (as Uintah's cpdi_lcrit does;
+/// the margin keeps a corner's rounding from crossing into a further node); one with
 /// det F <= 0, which no material state should have, falls back to the reference box.
 inline Eigen::Matrix3d cpdi_half_vectors(const Eigen::Matrix3d& F, const double lp)
 {
+  constexpr double largest_extent = cpdi_reach_cells * (1.0 - 1e-9);
   Eigen::Matrix3d r = lp * F;
   if (!(F.determinant() > 0.0))
     return lp * Eigen::Matrix3d::Identity();
   const double extent = r.cwiseAbs().rowwise().sum().maxCoeff();
-  if (extent > cpdi_reach_cells)
-    r *= cpdi_reach_cells / extent;
+  if (extent > largest_extent)
+    r *= largest_extent / extent;
   return r;
 }
 

@@ -9,6 +9,7 @@
 
 #include <Eigen/LU>
 
+#include <array>
 #include <type_traits>
 
 namespace vulnus::mpm
@@ -32,14 +33,24 @@ inline void visit_node(const Grid& grid, const Vector3& s, const int i, const in
 /// CPDI1: the point's parallelepiped x_p + sum_k xi_k r_k (xi in [-1, 1]^3) carries the
 /// trilinear interpolant of each node's tent function through its 8 corners, so the weight is
 /// the corners' mean, w_i = 1/8 sum_c N_i(x_c), and the domain-averaged gradient is
-/// 1/8 sum_c N_i(x_c) R^-T s_c (s_c the corner's signs, R = [r_1 r_2 r_3]).
+/// 1/8 sum_c N_i(x_c) R^-T s_c (s_c the corner's signs, R = [r_1 r_2 r_3]). The corners'
+/// shares are summed per node in the 4 x 4 x 4 block the reach allows before any node is
+/// visited, so a node shared by several corners is scattered to once.
 template <class Visitor>
 inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3& x,
                                const Eigen::Matrix3d& F, Visitor& visit)
 {
+  constexpr int block = 4;
   const Eigen::Matrix3d r = cpdi_half_vectors(F, lp);
   const Eigen::Matrix3d gradient_map = r.inverse().transpose() * (0.125 * grid.inverse_cell_size());
   const Vector3 s = grid.to_cell_units(x);
+  int base[3];
+  for (int d = 0; d < 3; ++d)
+    base[d] = first_stencil_node(s[d], 0.0) - 1;
+  std::array<double, block * block * block> weight{};
+  std::array<Vector3, block * block * block> gradient;
+  for (Vector3& g : gradient)
+    g.setZero();
   for (int c = 0; c < 8; ++c)
   {
     const Vector3 sign(corner_sign(c, 0), corner_sign(c, 1), corner_sign(c, 2));
@@ -55,10 +66,23 @@ inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3&
           const double N = w[0].value[i] * w[1].value[j] * w[2].value[k];
           if (N == 0.0)
             continue;
-          visit_node(grid, s, w[0].first_node + i, w[1].first_node + j, w[2].first_node + k,
-                     0.125 * N, (N * corner_gradient).eval(), visit);
+          const int entry = (w[0].first_node + i - base[0]) +
+                            block * ((w[1].first_node + j - base[1]) +
+                                     block * (w[2].first_node + k - base[2]));
+          weight[entry] += 0.125 * N;
+          gradient[entry] += N * corner_gradient;
         }
   }
+  for (int k = 0; k < block; ++k)
+    for (int j = 0; j < block; ++j)
+      for (int i = 0; i < block; ++i)
+      {
+        const int entry = i + block * (j + block * k);
+        if (weight[entry] == 0.0)
+          continue;
+        visit_node(grid, s, base[0] + i, base[1] + j, base[2] + k, weight[entry],
+                   gradient[entry], visit);
+      }
 }
 } // namespace detail
 
