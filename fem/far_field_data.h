@@ -119,6 +119,17 @@ struct FarFieldSolver::Data
   /// / limit and (fiber stretch - 1) / (limit - 1), infinite once a point has failed.
   std::vector<double> cell_failure_proximity;
   std::vector<double> cell_size;                 ///< smallest vertex distance / degree, m
+  /// Quiet cells: a cell none of whose nodes has moved more than this fraction of its size
+  /// and whose points are intact and never yielded is still at rest (strains below about
+  /// 1e-12); the explicit force evaluation skips it and keeps its rest stress, wave speed
+  /// and zero force. Off for the first evaluation after setup, which computes the rest values.
+  static constexpr double quiet_displacement_over_size = 1e-12;
+  bool skip_quiet_cells = false;
+  bool is_quiet(const std::vector<double>& u_local, double size, std::size_t first_point) const;
+  /// Local positions in the ghosted vectors of each owned cell's dofs (by active cell index,
+  /// n_dofs_per_cell each), so the cell loop reads values without a global-to-local lookup.
+  std::vector<int> cell_local_dofs;
+  void index_cell_dofs(const Vector& ghosted_layout);
 
   /// Boundary forces at the current state and their integrals: over the last step for the
   /// interface nodes, since the start (this rank) for the supports.

@@ -325,7 +325,9 @@ void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modi
   for (const DirichletDof& dirichlet : d.dirichlet_dofs)
     d.velocity(dirichlet.dof) = d.dirichlet_velocity(dirichlet, 0.0);
   d.velocity.compress(VectorOperation::insert);
+  d.skip_quiet_cells = false;
   evaluate_explicit_forces(0.0);
+  d.skip_quiet_cells = d.prm.skip_quiet_cells;
   d.last_power = d.external_power();
   d.boundary_now = d.boundary_forces();
   d.interface_impulse_last_step.assign(d.interface_nodes.size(), Tensor<1, 3>());

@@ -75,6 +75,7 @@ struct FePhaseTimes
   double internal_forces = 0.0; ///< material update at the quadrature points and assembly
   double rest = 0.0;            ///< external forces, vector updates, ghost exchange, constraints
   unsigned long long n_steps = 0;
+  unsigned long long quiet_cells_skipped = 0; ///< cell evaluations skipped as at rest
 };
 
 struct ImplicitStepStatistics

@@ -9,6 +9,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <iostream>
@@ -42,16 +43,27 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
     proximity_criterion = nullptr;
   const bool fibers = material->uses_fibers();
   internal_force_raw = 0.0;
+  if (cell_local_dofs.empty())
+    index_cell_dofs(u_ghosted);
+  const double* u_values = u_ghosted.trilinos_vector()[0];
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
     if (!cell->is_locally_owned())
       continue;
-    fe_values.reinit(cell);
-    cell->get_dof_indices(dofs);
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      u_local[i] = u_ghosted(dofs[i]);
     const unsigned int k = cell->active_cell_index();
     const std::size_t first = std::size_t(k) * n_q_points;
+    const int* local = &cell_local_dofs[std::size_t(k) * n_dofs];
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      u_local[i] = u_values[local[i]];
+    if (skip_quiet_cells && is_quiet(u_local, cell_size[k], first))
+    {
+      // Its forces, energy and stress are those of the rest state, to a strain of 1e-12.
+      std::copy_n(committed_states.begin() + first, n_q_points, trial_states.begin() + first);
+      ++phase_times.quiet_cells_skipped;
+      continue;
+    }
+    cell->get_dof_indices(dofs);
+    fe_values.reinit(cell);
     f_local = 0.0;
     Tensor<2, 3> stress_sum;
     double volume = 0.0, c_max = 0.0, proximity = 0.0;
@@ -122,6 +134,41 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
     condensed->compress(VectorOperation::add);
   throw_if_any(inverted, message, comm);
   return sums;
+}
+
+void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)
+{
+  const unsigned int n_dofs = fe.n_dofs_per_cell();
+  const Epetra_BlockMap& map = ghosted_layout.trilinos_vector().Map();
+  std::vector<types::global_dof_index> dofs(n_dofs);
+  cell_local_dofs.assign(std::size_t(triangulation.n_active_cells()) * n_dofs, 0);
+  for (const auto& cell : dof_handler.active_cell_iterators())
+  {
+    if (!cell->is_locally_owned())
+      continue;
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+    {
+      const int local = map.LID(static_cast<TrilinosWrappers::types::int_type>(dofs[i]));
+      if (local < 0)
+        throw std::logic_error("far field: a cell's dof is not in the ghosted vector");
+      cell_local_dofs[std::size_t(cell->active_cell_index()) * n_dofs + i] = local;
+    }
+  }
+}
+
+bool FarFieldSolver::Data::is_quiet(const std::vector<double>& u_local, const double size,
+                                    const std::size_t first_point) const
+{
+  const double quiet = quiet_displacement_over_size * size;
+  for (const double u : u_local)
+    if (std::abs(u) > quiet)
+      return false;
+  for (std::size_t q = first_point; q < first_point + n_q_points; ++q)
+    if (committed_states[q].failure != materials::intact ||
+        committed_states[q].plastic.equivalent_plastic_strain != 0.0)
+      return false;
+  return true;
 }
 
 void FarFieldSolver::Data::commit_states()
