@@ -73,6 +73,16 @@ std::pair<std::array<double, 3>, std::array<double, 3>> HybridSolver::zone_neede
     }
     beyond += cut_by_limit;
   }
+  // The limit and the grid-node bounds are computed differently and may differ in the last
+  // bit: a bound that did not move by a cell's 1e-9 is the zone's own, so that a zone at its
+  // limit is not rebuilt for nothing.
+  for (int d = 0; d < 3; ++d)
+  {
+    if (std::abs(lo[d] - split.hybrid.zone_min[d]) < 1e-9 * h)
+      lo[d] = split.hybrid.zone_min[d];
+    if (std::abs(hi[d] - split.hybrid.zone_max[d]) < 1e-9 * h)
+      hi[d] = split.hybrid.zone_max[d];
+  }
   n_cells_beyond_limit = std::max(n_cells_beyond_limit, beyond);
   check_seconds +=
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

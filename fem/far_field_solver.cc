@@ -248,6 +248,7 @@ void allocate_vectors(Data& d)
         &d.internal_force_raw, &d.external_force_raw, &d.inertia_coupling_raw, &d.residual})
     v->reinit(d.owned_dofs, d.comm);
   d.ghosted.reinit(d.owned_dofs, d.relevant_dofs, d.comm);
+  d.cell_local_dofs.clear(); // indices into the old layout
 }
 
 /// Quadrature-point history, fibers, cell sizes, lumped (row-sum) mass m_i = int rho0 N_i and

@@ -142,6 +142,7 @@ void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)
   const Epetra_BlockMap& map = ghosted_layout.trilinos_vector().Map();
   std::vector<types::global_dof_index> dofs(n_dofs);
   cell_local_dofs.assign(std::size_t(triangulation.n_active_cells()) * n_dofs, 0);
+  bool missing = false;
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
     if (!cell->is_locally_owned())
@@ -150,11 +151,11 @@ void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)
     for (unsigned int i = 0; i < n_dofs; ++i)
     {
       const int local = map.LID(static_cast<TrilinosWrappers::types::int_type>(dofs[i]));
-      if (local < 0)
-        throw std::logic_error("far field: a cell's dof is not in the ghosted vector");
-      cell_local_dofs[std::size_t(cell->active_cell_index()) * n_dofs + i] = local;
+      missing = missing || local < 0;
+      cell_local_dofs[std::size_t(cell->active_cell_index()) * n_dofs + i] = std::max(local, 0);
     }
   }
+  throw_if_any(missing, "far field: a cell's dof is not in the ghosted vector", comm);
 }
 
 bool FarFieldSolver::Data::is_quiet(const std::vector<double>& u_local, const double size,
@@ -162,7 +163,7 @@ bool FarFieldSolver::Data::is_quiet(const std::vector<double>& u_local, const do
 {
   const double quiet = quiet_displacement_over_size * size;
   for (const double u : u_local)
-    if (std::abs(u) > quiet)
+    if (!(std::abs(u) <= quiet)) // a NaN is not quiet: the material update reports it
       return false;
   for (std::size_t q = first_point; q < first_point + n_q_points; ++q)
     if (committed_states[q].failure != materials::intact ||

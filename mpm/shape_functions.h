@@ -110,16 +110,16 @@ inline constexpr double cpdi_reach_cells = 1.0;
 
 /// CPDI1 domain of a point, in cell units: the columns are the half-vectors r_k = F (lp e_k)
 /// of its parallelepiped (lp its reference half-size in cells). A domain stretched beyond the
-/// reach along some axis is shrunk uniformly to just inside it (as Uintah's cpdi_lcrit does;
-/// the margin keeps a corner's rounding from crossing into a further node); one with
-/// det F <= 0, which no material state should have, falls back to the reference box.
+/// reach along some axis is shrunk uniformly to just inside it (as Uintah's cpdi_lcrit does).
+/// One with det F <= 0 or a non-finite F, which no material state should have, falls back to
+/// the reference box, so that no corner can leave the 4 x 4 x 4 node block.
 inline Eigen::Matrix3d cpdi_half_vectors(const Eigen::Matrix3d& F, const double lp)
 {
   constexpr double largest_extent = cpdi_reach_cells * (1.0 - 1e-9);
   Eigen::Matrix3d r = lp * F;
-  if (!(F.determinant() > 0.0))
-    return lp * Eigen::Matrix3d::Identity();
   const double extent = r.cwiseAbs().rowwise().sum().maxCoeff();
+  if (!(F.determinant() > 0.0) || !std::isfinite(extent))
+    return lp * Eigen::Matrix3d::Identity();
   if (extent > largest_extent)
     r *= largest_extent / extent;
   return r;
@@ -130,4 +130,12 @@ inline constexpr double corner_sign(const int c, const int d)
 {
   return ((c >> d) & 1) ? 1.0 : -1.0;
 }
+
+/// Corner c of a CPDI domain with half-vectors r around s (cell units). The node marking and
+/// the transfers both place corners through it, so they agree on every corner's cell.
+inline Eigen::Vector3d cpdi_corner(const Eigen::Vector3d& s, const Eigen::Matrix3d& r, const int c)
+{
+  return s + r * Eigen::Vector3d(corner_sign(c, 0), corner_sign(c, 1), corner_sign(c, 2));
+}
+
 } // namespace vulnus::mpm

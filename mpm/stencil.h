@@ -54,7 +54,7 @@ inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3&
   for (int c = 0; c < 8; ++c)
   {
     const Vector3 sign(corner_sign(c, 0), corner_sign(c, 1), corner_sign(c, 2));
-    const Vector3 corner = s + r * sign;
+    const Vector3 corner = cpdi_corner(s, r, c);
     const Vector3 corner_gradient = gradient_map * sign;
     AxisWeights w[3];
     for (int d = 0; d < 3; ++d)
@@ -96,7 +96,7 @@ inline void for_each_cpdi_corner_cell(const Grid& grid, const double lp, const V
   const Vector3 s = grid.to_cell_units(x);
   for (int c = 0; c < 8; ++c)
   {
-    const Vector3 corner = s + r * Vector3(corner_sign(c, 0), corner_sign(c, 1), corner_sign(c, 2));
+    const Vector3 corner = cpdi_corner(s, r, c);
     visit(first_stencil_node(corner[0], 0.0), first_stencil_node(corner[1], 0.0),
           first_stencil_node(corner[2], 0.0));
   }

@@ -184,6 +184,15 @@ TEST(DistributedMpm, ReproducesTheOneProcessRun)
   // With contact, approach tests are discontinuous in the velocities: round-off can flip one
   // at a node where the bodies barely touch; bound 1e-3 of a cell, as for threads.
   EXPECT_LT(largest_difference_from_one_process(crossing_spheres(true), 40), 1e-6);
+  // Stencils reaching past the point's own cell (GIMP's box, CPDI's parallelepiped that
+  // breathes with F): the slabs' halos must hold every node they touch.
+  for (const auto shape : {mpm::ShapeFunction::gimp, mpm::ShapeFunction::cpdi})
+  {
+    mpm::SceneParameters wide = crossing_spheres(false);
+    wide.shape_function = shape;
+    EXPECT_LT(largest_difference_from_one_process(wide, 40), 1e-12)
+      << (shape == mpm::ShapeFunction::gimp ? "GIMP" : "CPDI");
+  }
   // An elastic-plastic sphere crossing the slabs: its histories migrate with its points.
   EXPECT_LT(largest_difference_from_one_process(crossing_spheres(false, true), 40), 1e-12);
   // The same sphere 400 times stiffer (20 times the gel's impedance), as a subcycled

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -220,4 +221,28 @@ TEST(ShapeFunctions, CpdiStencilStaysWithinTheGimpReach)
                                      });
   EXPECT_GT(visited, 8);
   EXPECT_LE(visited, stencil_entries(ShapeFunction::cpdi));
+}
+
+// An F no material state should have (inverted, infinite, NaN) falls back to the reference
+// box: the stencil stays a partition of unity within GIMP's reach instead of indexing
+// through a NaN corner.
+TEST(ShapeFunctions, CpdiOfAnUnphysicalFIsTheReferenceBox)
+{
+  const Grid grid(Vector3::Zero(), Vector3(8e-3, 8e-3, 8e-3), 1e-3);
+  const Vector3 x(3.3e-3, 4.6e-3, 4.1e-3);
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const Eigen::Matrix3d& F : {Eigen::Matrix3d(-Eigen::Matrix3d::Identity()),
+                                   Eigen::Matrix3d(inf * Eigen::Matrix3d::Identity()),
+                                   Eigen::Matrix3d(Eigen::Matrix3d::Constant(std::nan("")))})
+  {
+    std::map<std::int64_t, double> bad, reference;
+    for_each_node<ShapeFunction::cpdi>(grid, 0.25, x, F,
+                                       [&](std::int64_t key, double w, const Vector3&) { bad[key] += w; });
+    for_each_node<ShapeFunction::cpdi>(grid, 0.25, x, Eigen::Matrix3d::Identity(),
+                                       [&](std::int64_t key, double w, const Vector3&)
+                                       { reference[key] += w; });
+    ASSERT_EQ(bad.size(), reference.size());
+    for (const auto& [key, w] : reference)
+      EXPECT_DOUBLE_EQ(bad.at(key), w);
+  }
 }

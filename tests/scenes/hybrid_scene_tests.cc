@@ -102,6 +102,25 @@ TEST(HybridPaperScene, AWoundReachingTheFarFieldStopsTheRunOrIsFlagged)
   EXPECT_TRUE(warned);
 }
 
+// The stiff scene with a short reach: the zone reaches its limit at the second conversion,
+// and the places beyond it must not start conversions that convert nothing (one did, when the
+// limit and the zone's grid-node bound differed in the last bit).
+TEST(HybridPaperScene, AnAdaptiveZoneAtItsLimitConvertsNothingMore)
+{
+  ScratchDirectory scratch("adaptive_limit");
+  const nlohmann::json summary = run_and_read_summary(
+    "anisotropic_150ms_coarse_adaptive.prm",
+    "--set 'Material bullet/Model=rigid' --set 'Time/End time=8e-5'"
+    " --set 'Material tissue/Transversely isotropic hyperelastic/Bulk modulus=1e8'"
+    " --set 'Hybrid/Adaptive zone reach=0.006' --set 'Output/Particle output interval=0'",
+    scratch.path, "run");
+  const nlohmann::json& zone = summary["hybrid"]["adaptive_zone"];
+  ASSERT_GE(zone["conversions"].size(), 2u);
+  for (const nlohmann::json& c : zone["conversions"])
+    EXPECT_GT(c["cells"].get<int>(), 0) << "at MPM step " << c["mpm_step"];
+  EXPECT_GT(zone["cells_beyond_reach"].get<int>(), 0) << "the zone never pressed on its limit";
+}
+
 TEST(HybridPaperScene, AZoneOffTheGridIsRefusedBeforeAnyWork)
 {
   ScratchDirectory scratch("hybrid_bad_zone");
