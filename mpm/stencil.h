@@ -9,7 +9,9 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <type_traits>
 
 namespace vulnus::mpm
@@ -34,54 +36,71 @@ inline void visit_node(const Grid& grid, const Vector3& s, const int i, const in
 /// trilinear interpolant of each node's tent function through its 8 corners, so the weight is
 /// the corners' mean, w_i = 1/8 sum_c N_i(x_c), and the domain-averaged gradient is
 /// 1/8 sum_c N_i(x_c) R^-T s_c (s_c the corner's signs, R = [r_1 r_2 r_3]). The corners'
-/// shares are summed per node in the 4 x 4 x 4 block the reach allows before any node is
-/// visited, so a node shared by several corners is scattered to once.
+/// shares are summed per node in the block of nodes the corners' cells span (at most
+/// 4 x 4 x 4 within the reach) before any node is visited, so a node shared by several
+/// corners is scattered to once.
 template <class Visitor>
 inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3& x,
                                const Eigen::Matrix3d& F, Visitor& visit)
 {
-  constexpr int block = 4;
+  constexpr int most = 4;
   const Eigen::Matrix3d r = cpdi_half_vectors(F, lp);
   const Eigen::Matrix3d gradient_map = r.inverse().transpose() * (0.125 * grid.inverse_cell_size());
   const Vector3 s = grid.to_cell_units(x);
-  int base[3];
-  for (int d = 0; d < 3; ++d)
-    base[d] = first_stencil_node(s[d], 0.0) - 1;
-  std::array<double, block * block * block> weight{};
-  std::array<Vector3, block * block * block> gradient;
-  for (Vector3& g : gradient)
-    g.setZero();
+  AxisWeights w[8][3];
+  int lo[3] = {std::numeric_limits<int>::max(), std::numeric_limits<int>::max(),
+               std::numeric_limits<int>::max()};
+  int hi[3] = {std::numeric_limits<int>::min(), std::numeric_limits<int>::min(),
+               std::numeric_limits<int>::min()};
   for (int c = 0; c < 8; ++c)
   {
-    const Vector3 sign(corner_sign(c, 0), corner_sign(c, 1), corner_sign(c, 2));
     const Vector3 corner = cpdi_corner(s, r, c);
-    const Vector3 corner_gradient = gradient_map * sign;
-    AxisWeights w[3];
     for (int d = 0; d < 3; ++d)
-      linear_axis_weights(corner[d], 1.0, w[d]);
+    {
+      linear_axis_weights(corner[d], 1.0, w[c][d]);
+      lo[d] = std::min(lo[d], w[c][d].first_node);
+      hi[d] = std::max(hi[d], w[c][d].first_node);
+    }
+  }
+  // A corner exactly on the reach's last node has a zero second weight, never stored.
+  int n[3];
+  for (int d = 0; d < 3; ++d)
+    n[d] = std::min(most, hi[d] - lo[d] + 2);
+  const int entries = n[0] * n[1] * n[2];
+  std::array<double, most * most * most> weight;
+  std::array<Vector3, most * most * most> gradient;
+  for (int e = 0; e < entries; ++e)
+  {
+    weight[e] = 0.0;
+    gradient[e].setZero();
+  }
+  for (int c = 0; c < 8; ++c)
+  {
+    const Vector3 corner_gradient =
+      gradient_map * Vector3(corner_sign(c, 0), corner_sign(c, 1), corner_sign(c, 2));
     for (int k = 0; k < 2; ++k)
       for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i)
         {
-          const double N = w[0].value[i] * w[1].value[j] * w[2].value[k];
+          const double N = w[c][0].value[i] * w[c][1].value[j] * w[c][2].value[k];
           if (N == 0.0)
             continue;
-          const int entry = (w[0].first_node + i - base[0]) +
-                            block * ((w[1].first_node + j - base[1]) +
-                                     block * (w[2].first_node + k - base[2]));
+          const int entry = (w[c][0].first_node + i - lo[0]) +
+                            n[0] * ((w[c][1].first_node + j - lo[1]) +
+                                    n[1] * (w[c][2].first_node + k - lo[2]));
           weight[entry] += 0.125 * N;
           gradient[entry] += N * corner_gradient;
         }
   }
-  for (int k = 0; k < block; ++k)
-    for (int j = 0; j < block; ++j)
-      for (int i = 0; i < block; ++i)
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i)
       {
-        const int entry = i + block * (j + block * k);
+        const int entry = i + n[0] * (j + n[1] * k);
         if (weight[entry] == 0.0)
           continue;
-        visit_node(grid, s, base[0] + i, base[1] + j, base[2] + k, weight[entry],
-                   gradient[entry], visit);
+        visit_node(grid, s, lo[0] + i, lo[1] + j, lo[2] + k, weight[entry], gradient[entry],
+                   visit);
       }
 }
 } // namespace detail
