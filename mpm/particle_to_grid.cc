@@ -15,45 +15,32 @@ namespace vulnus::mpm
 void mark_active_nodes(const Particles& particles, const TransferSettings& settings, Grid& grid)
 {
   grid.clear_active_nodes();
-  // Marks the n^3 nodes of each point's stencil from its first node (CPDI: the 2^3 of each
-  // corner's cell); no weights needed. Sorted points come cell by cell, so a point whose first
-  // node repeats the previous one's marks nothing new.
-  const int n = nodes_per_axis(settings.shape);
+  // Marks the blocks of each point's stencil (for_each_stencil_block); no weights needed.
+  // Sorted points come cell by cell, so a block that repeats the one marked before it (the
+  // previous point's, or the previous CPDI corner's) marks nothing new.
   const int n_shares = omp_get_max_threads();
-  auto mark_block = [&](const int i0, const int j0, const int k0, const int width, const int share)
-  {
-    for (int k = 0; k < width; ++k)
-      for (int j = 0; j < width; ++j)
-        for (int i = 0; i < width; ++i)
-          grid.mark(grid.node_key(i0 + i, j0 + j, k0 + k), share);
-  };
   visit_shares_in_parallel(
       particles, n_shares,
       [&](const int share, const std::size_t b, const ShareRange range)
       {
         const double lp =
             settings.shape == ShapeFunction::linear ? 0.0 : settings.half_size_cells[b];
-        if (settings.shape == ShapeFunction::cpdi)
-        {
-          for (long p = range.begin; p < range.end; ++p)
-            for_each_cpdi_corner_cell(grid, lp, particles.position[p],
-                                      particles.deformation_gradient[p],
-                                      [&](const int i, const int j, const int k)
-                                      { mark_block(i, j, k, 2, share); });
-          return;
-        }
         std::array<int, 3> previous{{0, 0, 0}};
-        for (long p = range.begin; p < range.end; ++p)
+        bool marked_any = false;
+        auto mark_block = [&](const std::array<int, 3>& first, const int width)
         {
-          const Vector3 s = grid.to_cell_units(particles.position[p]);
-          const std::array<int, 3> first{{first_stencil_node(s[0], lp),
-                                          first_stencil_node(s[1], lp),
-                                          first_stencil_node(s[2], lp)}};
-          if (first == previous && p > range.begin)
-            continue;
+          if (marked_any && first == previous)
+            return;
+          marked_any = true;
           previous = first;
-          mark_block(first[0], first[1], first[2], n, share);
-        }
+          for (int k = 0; k < width; ++k)
+            for (int j = 0; j < width; ++j)
+              for (int i = 0; i < width; ++i)
+                grid.mark(grid.node_key(first[0] + i, first[1] + j, first[2] + k), share);
+        };
+        for (long p = range.begin; p < range.end; ++p)
+          for_each_stencil_block(grid, settings.shape, lp, particles.position[p],
+                                 particles.deformation_gradient[p], mark_block);
       });
   grid.number_active_nodes(n_shares);
 }

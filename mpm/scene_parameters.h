@@ -16,6 +16,12 @@ enum class ShapeFunction
   cpdi  ///< CPDI1: a parallelepiped per point that deforms with its F
 };
 
+/// The shape functions' name in logs and messages.
+inline const char* shape_function_name(const ShapeFunction shape)
+{
+  return shape == ShapeFunction::linear ? "linear" : shape == ShapeFunction::gimp ? "GIMP" : "CPDI";
+}
+
 enum class UpdateScheme
 {
   usl, ///< update stress last

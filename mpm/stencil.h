@@ -105,19 +105,28 @@ inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3&
 }
 } // namespace detail
 
-/// The first node of each corner's cell of a CPDI point (the nodes it may touch are the
-/// 2 x 2 x 2 from each), for the node marking.
+/// The blocks of nodes a point's stencil may touch, each given by its first node and its width
+/// along every axis, for the node marking: one block of nodes_per_axis nodes from the first
+/// stencil node (linear, GIMP), or the 2 x 2 x 2 nodes of each corner's cell (CPDI).
 template <class Visit>
-inline void for_each_cpdi_corner_cell(const Grid& grid, const double lp, const Vector3& x,
-                                      const Eigen::Matrix3d& F, Visit&& visit)
+inline void for_each_stencil_block(const Grid& grid, const ShapeFunction shape, const double lp,
+                                   const Vector3& x, const Eigen::Matrix3d& F, Visit&& visit)
 {
-  const Eigen::Matrix3d r = cpdi_half_vectors(F, lp);
   const Vector3 s = grid.to_cell_units(x);
+  if (shape != ShapeFunction::cpdi)
+  {
+    visit(std::array<int, 3>{{first_stencil_node(s[0], lp), first_stencil_node(s[1], lp),
+                              first_stencil_node(s[2], lp)}},
+          nodes_per_axis(shape));
+    return;
+  }
+  const Eigen::Matrix3d r = cpdi_half_vectors(F, lp);
   for (int c = 0; c < 8; ++c)
   {
     const Vector3 corner = cpdi_corner(s, r, c);
-    visit(first_stencil_node(corner[0], 0.0), first_stencil_node(corner[1], 0.0),
-          first_stencil_node(corner[2], 0.0));
+    visit(std::array<int, 3>{{first_stencil_node(corner[0], 0.0), first_stencil_node(corner[1], 0.0),
+                              first_stencil_node(corner[2], 0.0)}},
+          2);
   }
 }
 

@@ -71,9 +71,7 @@ void MpmStepper::log_scene(io::RunDirectory& directory) const
   o << "MPM scene: " << solver.n_points_all_ranks() << " points, cell size " << scene.cell_size << " m, grid "
     << solver.background_grid().cells()[0] << " x " << solver.background_grid().cells()[1]
     << " x " << solver.background_grid().cells()[2] << " cells, "
-    << (scene.shape_function == mpm::ShapeFunction::linear ? "linear"
-        : scene.shape_function == mpm::ShapeFunction::gimp ? "GIMP"
-                                                            : "CPDI")
+    << mpm::shape_function_name(scene.shape_function)
     << " shape functions, " << (scene.update_scheme == mpm::UpdateScheme::musl ? "MUSL" : "USL")
     << ", " << omp_get_max_threads() << " thread(s)";
   if (solver.rank_group().distributed())

@@ -139,7 +139,7 @@ void report_thread_scaling(const mpm::SceneParameters& scene, const std::size_t 
       const double two = measure(scene, 2, shape, warmup, steps).point_steps_per_second;
       ratios.push_back(two / one);
     }
-    std::printf("  %s, %zu pairs 1 then 2 threads:", shape == mpm::ShapeFunction::linear ? "linear" : "GIMP",
+    std::printf("  %s, %zu pairs 1 then 2 threads:", mpm::shape_function_name(shape),
                 repeats);
     for (const double ratio : ratios)
       std::printf(" %.2f", ratio);

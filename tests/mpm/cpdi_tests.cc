@@ -221,7 +221,7 @@ TEST(Cpdi, HangingColumnHoldsTogetherAndSettlesNearTheAnalyticEquilibrium)
               "%.1e m/s\n", coarse, fine, coarse_speed, fine_speed);
   for (const auto shape : {mpm::ShapeFunction::linear, mpm::ShapeFunction::gimp})
     std::printf("%s column at 1 mm: error / tip displacement %.4f (inf: torn)\n",
-                shape == mpm::ShapeFunction::linear ? "linear" : "GIMP",
+                mpm::shape_function_name(shape),
                 column_error(shape, 1e-3, g, analytic).first);
   EXPECT_LT(coarse_speed, 2e-3);
   EXPECT_LT(fine_speed, 2e-3);

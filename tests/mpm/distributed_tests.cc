@@ -191,7 +191,7 @@ TEST(DistributedMpm, ReproducesTheOneProcessRun)
     mpm::SceneParameters wide = crossing_spheres(false);
     wide.shape_function = shape;
     EXPECT_LT(largest_difference_from_one_process(wide, 40), 1e-12)
-      << (shape == mpm::ShapeFunction::gimp ? "GIMP" : "CPDI");
+      << mpm::shape_function_name(shape);
   }
   // An elastic-plastic sphere crossing the slabs: its histories migrate with its points.
   EXPECT_LT(largest_difference_from_one_process(crossing_spheres(false, true), 40), 1e-12);
