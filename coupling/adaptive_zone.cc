@@ -1,8 +1,7 @@
 // The adaptive MPM zone (docs/adaptive_zone.md): far-field cells whose material nears failure
 // become material points. The zone stays a box on grid nodes and grows to hold them; the far
 // field's mesh has the grid's cells wherever the zone may grow, so the grown far field is the
-// old one minus the converted cells and takes over the rest of its state node by node and
-// cell by cell. Mass and momentum pass to the points exactly (the lattice integrates the
+// same mesh with the converted cells switched off, its state left where it is. Mass and momentum pass to the points exactly (the lattice integrates the
 // trilinear fields exactly); the kinetic energy drops by the lumped-minus-consistent
 // difference of the converted cells, which each conversion records.
 #include "coupling/hybrid_solver.h"
@@ -139,19 +138,16 @@ void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
   added.finish_body();
   const std::uint64_t n_added = added.size();
 
-  // The far field without them, taking over the state of the rest.
+  // The far field without them (its mesh keeps the start zone's hole: a restart builds that
+  // and converts the same cells).
   split.hybrid.zone_min = new_min;
   split.hybrid.zone_max = new_max;
   for (int d = 0; d < 3; ++d)
   {
-    split.fe.hole_min[d] = new_min[d];
-    split.fe.hole_max[d] = new_max[d];
     split.mpm.bodies[body].box_min[d] = new_min[d];
     split.mpm.bodies[body].box_max[d] = new_max[d];
   }
-  std::unique_ptr<fem::FarFieldSolver> grown = build_far_field();
-  grown->take_state_from(*fe_solver);
-  fe_solver = std::move(grown);
+  fe_solver->convert_cells_inside(new_min, new_max);
 
   // The impulse still in transit, by grid key: it stays on nodes that remain on the
   // interface; a node that is now inside the zone hands it to the nearest interface node.

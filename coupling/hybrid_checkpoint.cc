@@ -14,7 +14,7 @@ constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '2'};
 
 void HybridSolver::save(std::ostream& out) const
 {
-  // The zone first: a restart rebuilds the far field of a grown zone before reading it.
+  // The zone first: a restart converts the far field's cells of a grown zone before reading it.
   out.write(tag, sizeof(tag));
   binary::put(out, split.hybrid.zone_min);
   binary::put(out, split.hybrid.zone_max);
@@ -44,17 +44,15 @@ void HybridSolver::restore(std::istream& in)
   binary::get(in, zone_max);
   if (zone_min != split.hybrid.zone_min || zone_max != split.hybrid.zone_max)
   {
-    // The run had grown its zone: the far field of that zone, its state read below.
+    // The run had grown its zone: the far field converts the same cells, its state read below.
     split.hybrid.zone_min = zone_min;
     split.hybrid.zone_max = zone_max;
     for (int d = 0; d < 3; ++d)
     {
-      split.fe.hole_min[d] = zone_min[d];
-      split.fe.hole_max[d] = zone_max[d];
       split.mpm.bodies[split.coupled_body].box_min[d] = zone_min[d];
       split.mpm.bodies[split.coupled_body].box_max[d] = zone_max[d];
     }
-    fe_solver = build_far_field();
+    fe_solver->convert_cells_inside(zone_min, zone_max);
     match_interface_nodes(comm);
     for (std::vector<mpm::Vector3>* v : {&velocity_start, &velocity_end, &created, &correction})
       v->assign(keys.size(), mpm::Vector3::Zero());

@@ -1,7 +1,6 @@
 // The far field's side of an adaptive MPM zone: which cells near failure (kept by every force
-// evaluation), the material points of cells about to convert, and the hand-over of the state to a mesh
-// with a larger hole whose other cells are the same (fine region of the mesh, FeSceneParameters
-// focus), matched by position.
+// evaluation), the material points of cells about to convert, and their conversion: the cells
+// stay in the mesh, switched off, and the faces they share with live cells join the interface.
 #include "fem/far_field_data.h"
 #include "fem/tensor_conversion.h"
 
@@ -9,11 +8,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
-#include <cmath>
-#include <cstring>
-#include <limits>
-#include <map>
-#include <stdexcept>
 
 namespace vulnus::fem
 {
@@ -21,14 +15,6 @@ using namespace dealii;
 
 namespace
 {
-using PositionKey = std::array<long long, 3>;
-
-/// Positions of the same mesh line agree to round-off; a millionth of a cell tells them apart.
-PositionKey key_of(const Point<3>& x, const double quantum)
-{
-  return {std::llround(x[0] / quantum), std::llround(x[1] / quantum), std::llround(x[2] / quantum)};
-}
-
 /// Displacement gradient and fields at the quadrature points of one cell.
 struct CellKinematics
 {
@@ -64,7 +50,7 @@ std::vector<Point<3>> FarFieldSolver::cells_nearing_failure(const double thresho
               ExcMessage("cells_nearing_failure needs FeSceneParameters::track_failure_proximity"));
   std::vector<double> mine;
   for (const auto& cell : d.triangulation.active_cell_iterators())
-    if (cell->is_locally_owned() && d.cell_failure_proximity[cell->active_cell_index()] >= threshold)
+    if (d.owns_live(cell) && d.cell_failure_proximity[cell->active_cell_index()] >= threshold)
       for (unsigned int c = 0; c < 3; ++c)
         mine.push_back(cell->center()[c]);
   std::vector<Point<3>> centres;
@@ -97,7 +83,7 @@ FarFieldSolver::material_points_inside(const std::array<double, 3>& box_min,
   std::vector<ConvertedPoint> points;
   for (const auto& cell : d.dof_handler.active_cell_iterators())
   {
-    if (!cell->is_locally_owned())
+    if (!d.owns_live(cell))
       continue;
     const Point<3> c = cell->center();
     bool inside = true;
@@ -128,110 +114,39 @@ FarFieldSolver::material_points_inside(const std::array<double, 3>& box_min,
   return points;
 }
 
-void FarFieldSolver::take_state_from(const FarFieldSolver& before)
+void FarFieldSolver::convert_cells_inside(const std::array<double, 3>& box_min,
+                                          const std::array<double, 3>& box_max)
 {
   Data& d = *data;
-  const Data& old = *before.data;
-  const double quantum = 1e-6 * d.prm.interface_cell_size;
-
-  // Every node's displacement, velocity and acceleration, on every rank, by position.
-  std::vector<double> packed;
-  for (const NodeRecord& node : old.owned_nodes)
-  {
-    for (unsigned int c = 0; c < 3; ++c)
-      packed.push_back(node.position[c]);
-    for (const Data::Vector* field : {&old.displacement, &old.velocity, &old.acceleration})
-      for (unsigned int c = 0; c < 3; ++c)
-        packed.push_back((*field)(node.dofs[c]));
-  }
-  std::map<PositionKey, std::array<double, 9>> nodal;
-  for (const std::vector<double>& theirs : Utilities::MPI::all_gather(d.comm, packed))
-    for (std::size_t i = 0; i + 11 < theirs.size(); i += 12)
-    {
-      std::array<double, 9> fields;
-      std::copy(theirs.begin() + i + 3, theirs.begin() + i + 12, fields.begin());
-      nodal[key_of(Point<3>(theirs[i], theirs[i + 1], theirs[i + 2]), quantum)] = fields;
-    }
-  std::string missing;
-  for (const NodeRecord& node : d.owned_nodes)
-  {
-    const auto found = nodal.find(key_of(node.position, quantum));
-    if (found == nodal.end())
-    {
-      missing = "a node of the new far-field mesh has no counterpart in the old one";
-      break;
-    }
-    for (unsigned int c = 0; c < 3; ++c)
-    {
-      d.displacement(node.dofs[c]) = found->second[c];
-      d.velocity(node.dofs[c]) = found->second[3 + c];
-      d.acceleration(node.dofs[c]) = found->second[6 + c];
-    }
-  }
-  nodal.clear();
-
-  // Every cell's quadrature-point histories, by cell centre.
-  std::vector<char> states;
-  const std::size_t record = 3 * sizeof(double) + old.n_q_points * sizeof(materials::PointState);
-  for (const auto& cell : old.triangulation.active_cell_iterators())
-    if (cell->is_locally_owned())
-    {
-      const std::size_t at = states.size();
-      states.resize(at + record);
-      const Point<3> c = cell->center();
-      std::memcpy(states.data() + at, &c[0], sizeof(double));
-      std::memcpy(states.data() + at + sizeof(double), &c[1], sizeof(double));
-      std::memcpy(states.data() + at + 2 * sizeof(double), &c[2], sizeof(double));
-      std::memcpy(states.data() + at + 3 * sizeof(double),
-                  &old.committed_states[std::size_t(cell->active_cell_index()) * old.n_q_points],
-                  old.n_q_points * sizeof(materials::PointState));
-    }
-  std::map<PositionKey, std::vector<materials::PointState>> histories;
-  for (const std::vector<char>& theirs : Utilities::MPI::all_gather(d.comm, states))
-    for (std::size_t at = 0; at + record <= theirs.size(); at += record)
-    {
-      double c[3];
-      std::memcpy(c, theirs.data() + at, 3 * sizeof(double));
-      std::vector<materials::PointState> s(old.n_q_points);
-      std::memcpy(s.data(), theirs.data() + at + 3 * sizeof(double),
-                  old.n_q_points * sizeof(materials::PointState));
-      histories[key_of(Point<3>(c[0], c[1], c[2]), quantum)] = std::move(s);
-    }
+  if (d.cell_converted.empty())
+    d.cell_converted.assign(d.triangulation.n_active_cells(), 0);
+  // Every rank holds every cell of the unrefined mesh (artificial ones too), so each decides
+  // all of them alike, ghosts and neighbours across ranks included.
   for (const auto& cell : d.triangulation.active_cell_iterators())
-    if (cell->is_locally_owned() && missing.empty())
-    {
-      const auto found = histories.find(key_of(cell->center(), quantum));
-      if (found == histories.end() || found->second.size() != d.n_q_points)
-      {
-        missing = "a cell of the new far-field mesh has no counterpart in the old one";
-        break;
-      }
-      std::copy(found->second.begin(), found->second.end(),
-                d.committed_states.begin() + std::size_t(cell->active_cell_index()) * d.n_q_points);
-    }
-  if (Utilities::MPI::max(missing.empty() ? 0u : 1u, d.comm) > 0)
-    throw std::logic_error("adaptive zone: " +
-                           (missing.empty() ? std::string("a mesh mismatch on another rank") : missing));
-  d.trial_states = d.committed_states;
-  for (Data::Vector* v : {&d.displacement, &d.velocity, &d.acceleration})
-    v->compress(VectorOperation::insert);
-
-  d.time = old.time;
-  d.step = old.step;
-  d.external_work = old.external_work;
-  d.dissipated_energy = old.dissipated_energy;
-  d.last_warned_failures = old.last_warned_failures;
-  d.n_failed_points = old.n_failed_points;
-  d.phase_times = old.phase_times;
-  // The supports' impulses are summed over ranks when read: the total goes to rank 0.
-  const bool first_rank = Utilities::MPI::this_mpi_process(d.comm) == 0;
-  for (unsigned int b = 0; b <= n_slab_faces; ++b)
   {
-    const Tensor<1, 3> total = Utilities::MPI::sum(old.support_impulse[b], d.comm);
-    d.support_impulse[b] = first_rank ? total : Tensor<1, 3>();
+    const Point<3> c = cell->center();
+    bool inside = true;
+    for (unsigned int a = 0; a < 3 && inside; ++a)
+      inside = c[a] > box_min[a] && c[a] < box_max[a];
+    unsigned char& converted = d.cell_converted[cell->active_cell_index()];
+    if (inside && !converted)
+    {
+      converted = 1;
+      ++d.n_converted_cells;
+    }
   }
+  build_boundaries_and_mass(d);
+  for (const auto dof : d.dead_dofs)
+  {
+    d.velocity(dof) = 0.0;
+    d.acceleration(dof) = 0.0;
+  }
+  for (Data::Vector* v : {&d.velocity, &d.acceleration})
+    v->compress(VectorOperation::insert);
+  d.implicit.reset(); // its sparsity and constraints were those of the smaller hole
 
-  // Forces at the taken-over state; an implicit integrator keeps its own accelerations.
+  // Forces at the current state on the new mass; an implicit integrator keeps its own
+  // accelerations.
   const Data::Vector acceleration = d.acceleration;
   evaluate_explicit_forces(d.time);
   if (d.is_implicit())

@@ -150,6 +150,29 @@ struct FarFieldSolver::Data
   std::shared_ptr<ImplicitData>
       implicit; ///< matrix and preconditioner (shared_ptr: incomplete type)
 
+  /// Adaptive zone: cells whose material became points (by active cell index, every cell
+  /// of the mesh, artificial ones included, decided by its centre; empty before the first
+  /// conversion). They stay in the mesh and its dof numbering but take no part: no mass, no
+  /// forces, no output; their faces next to live cells are interface faces.
+  std::vector<unsigned char> cell_converted;
+  unsigned long long n_converted_cells = 0; ///< over the whole mesh
+  /// Owned dofs of no live cell: no mass, held at rest, a unit-mass row in the implicit
+  /// matrix (scaled by dead_dof_mass).
+  std::vector<dealii::types::global_dof_index> dead_dofs;
+  double dead_dof_mass = 0.0;
+
+  template <class CellIterator>
+  bool is_converted(const CellIterator& cell) const
+  {
+    return !cell_converted.empty() && cell_converted[cell->active_cell_index()] != 0;
+  }
+  /// Locally owned and not converted: the cells every loop of the solver works on.
+  template <class CellIterator>
+  bool owns_live(const CellIterator& cell) const
+  {
+    return cell->is_locally_owned() && !is_converted(cell);
+  }
+
   bool is_implicit() const { return prm.integrator != TimeIntegrator::central_difference; }
 
   /// Velocity of a Dirichlet dof at time t.
@@ -181,6 +204,11 @@ struct FarFieldSolver::Data
 /// The Newmark velocity weight gamma of the configured integrator (1/2 for the explicit and the
 /// average-acceleration steps).
 double integrator_gamma(const FeSceneParameters& prm);
+
+/// Collective: the owned nodes, boundary faces (the converted cells' faces next to live cells
+/// among the interface faces), Dirichlet dofs, interface nodes, dead dofs and lumped mass, for
+/// the current set of converted cells.
+void build_boundaries_and_mass(FarFieldSolver::Data& d);
 
 /// Throws std::runtime_error with `message` on every rank if `failed` is true on any rank.
 void throw_if_any(bool failed, const std::string& message, MPI_Comm comm);

@@ -96,17 +96,20 @@ void distribute_dofs(Data& d)
   d.hanging_constraints.close();
 }
 
-/// Nodes owned by this rank (every owned dof lies on an owned cell); returns the node of
-/// each of their dofs.
+/// Nodes owned by this rank and held by a live cell; returns the node of each of their dofs.
+/// Owned cells come first; a node whose only live cells are ghosts (its owned cells were
+/// converted) follows from those.
 NodeOfDof collect_owned_nodes(Data& d)
 {
   std::vector<types::global_dof_index> dofs(d.fe.n_dofs_per_cell());
   const std::vector<Point<3>>& unit_points = d.fe.base_element(0).get_unit_support_points();
   d.owned_nodes.clear();
   std::unordered_map<types::global_dof_index, unsigned int> node_of_dof;
-  for (const auto& cell : d.dof_handler.active_cell_iterators())
-    if (cell->is_locally_owned())
+  for (const bool owned_cells : {true, false})
+    for (const auto& cell : d.dof_handler.active_cell_iterators())
     {
+      if (cell->is_artificial() || d.is_converted(cell) || cell->is_locally_owned() != owned_cells)
+        continue;
       cell->get_dof_indices(dofs);
       for (unsigned int j = 0; j < unit_points.size(); ++j)
       {
@@ -138,11 +141,13 @@ std::map<types::global_dof_index, DirichletCandidate> collect_face_dofs_and_supp
   std::vector<std::set<types::global_dof_index>> face_sets(n_slab_faces + 1);
   const bool interface_driven = prm.interface_condition == InterfaceCondition::velocity_driven;
   for (const auto& cell : d.dof_handler.active_cell_iterators())
-    if (!cell->is_artificial())
+    if (!cell->is_artificial() && !d.is_converted(cell))
       for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
+        if (cell->face(f)->at_boundary() || d.is_converted(cell->neighbor(f)))
         {
-          const types::boundary_id b = cell->face(f)->boundary_id();
+          // A face next to a converted cell is a face of the grown hole.
+          const types::boundary_id b = cell->face(f)->at_boundary() ? cell->face(f)->boundary_id()
+                                                                    : boundary_ids::interface;
           if (b > boundary_ids::interface)
             continue;
           cell->face(f)->get_dof_indices(face_dof_indices);
@@ -150,7 +155,7 @@ std::map<types::global_dof_index, DirichletCandidate> collect_face_dofs_and_supp
           {
             const types::global_dof_index dof = face_dof_indices[k];
             const unsigned int component = d.fe.face_system_to_component_index(k).first;
-            if (cell->is_locally_owned() && d.owned_dofs.is_element(dof) &&
+            if (d.owned_dofs.is_element(dof) &&
                 face_sets[b].insert(dof).second)
               d.face_dofs[b].emplace_back(dof, component);
             if (d.hanging_constraints.is_constrained(dof))
@@ -226,6 +231,27 @@ void build_dirichlet_constraints(Data& d,
   d.increment_constraints.reinit(d.relevant_dofs);
   d.increment_constraints.merge(d.hanging_constraints);
   d.dirichlet_dofs.clear();
+  d.dead_dofs.clear();
+  if (d.n_converted_cells > 0)
+  {
+    // Every cell holding a relevant dof is owned or a ghost, so the live ones tell which are dead.
+    std::vector<char> live(d.relevant_dofs.n_elements(), 0);
+    std::vector<types::global_dof_index> dofs(d.fe.n_dofs_per_cell());
+    for (const auto& cell : d.dof_handler.active_cell_iterators())
+      if (!cell->is_artificial() && !d.is_converted(cell))
+      {
+        cell->get_dof_indices(dofs);
+        for (const auto i : dofs)
+          live[d.relevant_dofs.index_within_set(i)] = 1;
+      }
+    for (const auto i : d.relevant_dofs)
+      if (!live[d.relevant_dofs.index_within_set(i)])
+      {
+        d.increment_constraints.add_line(i);
+        if (d.owned_dofs.is_element(i))
+          d.dead_dofs.push_back(i);
+      }
+  }
   for (auto& [dof, candidate] : candidates)
   {
     d.increment_constraints.add_line(dof);
@@ -251,13 +277,10 @@ void allocate_vectors(Data& d)
   d.cell_local_dofs.clear(); // indices into the old layout
 }
 
-/// Quadrature-point history, fibers, cell sizes, lumped (row-sum) mass m_i = int rho0 N_i and
-/// its inverse (zero on constrained and Dirichlet dofs).
-void build_point_history_and_lumped_mass(Data& d)
+/// Quadrature-point history, fibers and cell sizes.
+void build_point_history(Data& d)
 {
   const FeSceneParameters& prm = d.prm;
-  const unsigned int dofs_per_cell = d.fe.n_dofs_per_cell();
-  std::vector<types::global_dof_index> dofs(dofs_per_cell);
   d.n_q_points = d.quadrature.size();
   const unsigned int n_cells = d.triangulation.n_active_cells();
   d.committed_states.assign(std::size_t(n_cells) * d.n_q_points, materials::PointState());
@@ -268,31 +291,48 @@ void build_point_history_and_lumped_mass(Data& d)
   d.cell_wave_speed.assign(n_cells, 0.0);
   d.cell_failure_proximity.assign(n_cells, 0.0);
   d.cell_size.assign(n_cells, 0.0);
-  FEValues<3> fe_values(d.mapping, d.fe, d.quadrature,
-                        update_values | update_JxW_values | update_quadrature_points);
-  Vector<double> local_mass(dofs_per_cell);
+  FEValues<3> fe_values(d.mapping, d.fe, d.quadrature, update_quadrature_points);
   const bool fibers = d.material->uses_fibers();
   for (const auto& cell : d.dof_handler.active_cell_iterators())
     if (cell->is_locally_owned())
     {
-      fe_values.reinit(cell);
-      cell->get_dof_indices(dofs);
       const std::size_t first = std::size_t(cell->active_cell_index()) * d.n_q_points;
-      local_mass = 0.0;
-      for (unsigned int q = 0; q < d.n_q_points; ++q)
+      if (fibers)
       {
-        const Point<3>& x = fe_values.quadrature_point(q);
-        if (fibers)
+        fe_values.reinit(cell);
+        for (unsigned int q = 0; q < d.n_q_points; ++q)
+        {
+          const Point<3>& x = fe_values.quadrature_point(q);
           d.fiber_directions[first + q] =
               materials::fiber_direction(prm.fibers, Eigen::Vector3d(x[0], x[1], x[2]));
+        }
+      }
+      d.cell_size[cell->active_cell_index()] = cell->minimum_vertex_distance() / prm.degree;
+    }
+}
+
+/// Lumped (row-sum) mass m_i = int rho0 N_i over the live cells and its inverse (zero on
+/// constrained, Dirichlet and dead dofs).
+void build_lumped_mass(Data& d)
+{
+  const unsigned int dofs_per_cell = d.fe.n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(dofs_per_cell);
+  FEValues<3> fe_values(d.mapping, d.fe, d.quadrature, update_values | update_JxW_values);
+  Vector<double> local_mass(dofs_per_cell);
+  d.lumped_mass = 0.0;
+  for (const auto& cell : d.dof_handler.active_cell_iterators())
+    if (d.owns_live(cell))
+    {
+      fe_values.reinit(cell);
+      cell->get_dof_indices(dofs);
+      local_mass = 0.0;
+      for (unsigned int q = 0; q < d.n_q_points; ++q)
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           local_mass(i) +=
-              prm.density *
+              d.prm.density *
               fe_values.shape_value_component(i, q, d.fe.system_to_component_index(i).first) *
               fe_values.JxW(q);
-      }
       d.hanging_constraints.distribute_local_to_global(local_mass, dofs, d.lumped_mass);
-      d.cell_size[cell->active_cell_index()] = cell->minimum_vertex_distance() / prm.degree;
     }
   d.lumped_mass.compress(VectorOperation::add);
   for (const auto i : d.owned_dofs)
@@ -303,8 +343,19 @@ void build_point_history_and_lumped_mass(Data& d)
   for (const DirichletDof& dirichlet : d.dirichlet_dofs)
     d.inverse_mass(dirichlet.dof) = 0.0;
   d.inverse_mass.compress(VectorOperation::insert);
+  const double n_owned = Utilities::MPI::sum(double(d.owned_dofs.n_elements()), d.comm);
+  d.dead_dof_mass = d.lumped_mass.l1_norm() / std::max(n_owned, 1.0);
 }
 } // namespace
+
+void build_boundaries_and_mass(FarFieldSolver::Data& d)
+{
+  const NodeOfDof node_of_dof = collect_owned_nodes(d);
+  std::map<types::global_dof_index, DirichletCandidate> candidates = collect_face_dofs_and_supports(d);
+  const NodeOfDof interface_index_of_dof = collect_interface_nodes(d, node_of_dof);
+  build_dirichlet_constraints(d, candidates, node_of_dof, interface_index_of_dof);
+  build_lumped_mass(d);
+}
 
 void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modify_mesh)
 {
@@ -313,12 +364,11 @@ void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modi
   if (modify_mesh)
     modify_mesh(d.triangulation);
   distribute_dofs(d);
-  const NodeOfDof node_of_dof = collect_owned_nodes(d);
-  std::map<types::global_dof_index, DirichletCandidate> candidates = collect_face_dofs_and_supports(d);
-  const NodeOfDof interface_index_of_dof = collect_interface_nodes(d, node_of_dof);
-  build_dirichlet_constraints(d, candidates, node_of_dof, interface_index_of_dof);
+  d.cell_converted.clear();
+  d.n_converted_cells = 0;
   allocate_vectors(d);
-  build_point_history_and_lumped_mass(d);
+  build_point_history(d);
+  build_boundaries_and_mass(d);
 
   // Initial state: u = 0, v = prescribed values, a = M^{-1} (f_ext - f_int).
   d.time = 0.0;
@@ -361,7 +411,7 @@ double FarFieldSolver::next_time_step() const
     return d.prm.time_step;
   double dt = std::numeric_limits<double>::max();
   for (const auto& cell : d.triangulation.active_cell_iterators())
-    if (cell->is_locally_owned())
+    if (d.owns_live(cell))
     {
       const unsigned int k = cell->active_cell_index();
       if (d.cell_wave_speed[k] > 0.0)
@@ -424,7 +474,7 @@ unsigned long long FarFieldSolver::n_failed_points() const
 }
 unsigned long long FarFieldSolver::n_active_cells() const
 {
-  return data->triangulation.n_global_active_cells();
+  return data->triangulation.n_global_active_cells() - data->n_converted_cells;
 }
 unsigned long long FarFieldSolver::n_dofs() const
 {
@@ -465,7 +515,7 @@ void FarFieldSolver::locally_owned_cell_stresses(std::vector<Point<3>>& centres,
   centres.clear();
   stresses.clear();
   for (const auto& cell : data->triangulation.active_cell_iterators())
-    if (cell->is_locally_owned())
+    if (data->owns_live(cell))
     {
       centres.push_back(cell->center());
       stresses.push_back(data->cell_stress[cell->active_cell_index()]);
@@ -477,7 +527,7 @@ Tensor<2, 3> FarFieldSolver::average_cauchy_stress() const
   Tensor<2, 3> sum;
   double volume = 0.0;
   for (const auto& cell : data->triangulation.active_cell_iterators())
-    if (cell->is_locally_owned())
+    if (data->owns_live(cell))
     {
       const double v = cell->measure();
       sum += v * data->cell_stress[cell->active_cell_index()];
@@ -558,7 +608,7 @@ FeDiagnostics FarFieldSolver::diagnostics() const
   r.n_failed_points = d.n_failed_points;
   double c_max = 0.0;
   for (const auto& cell : d.triangulation.active_cell_iterators())
-    if (cell->is_locally_owned())
+    if (d.owns_live(cell))
       c_max = std::max(c_max, d.cell_wave_speed[cell->active_cell_index()]);
   r.max_wave_speed = Utilities::MPI::max(c_max, d.comm);
   return r;

@@ -165,7 +165,8 @@ public:
   unsigned long long n_dofs() const;
   unsigned long long n_quadrature_points() const;
 
-  /// Nodes owned by this rank (not collective) and their current fields.
+  /// Nodes owned by this rank that belong to a live (not converted) cell, not collective, and
+  /// their current fields.
   const std::vector<NodeRecord>& locally_owned_nodes() const;
   dealii::Tensor<1, 3> displacement(const NodeRecord& node) const;
   dealii::Tensor<1, 3> velocity(const NodeRecord& node) const;
@@ -207,12 +208,13 @@ public:
   std::vector<ConvertedPoint> material_points_inside(const std::array<double, 3>& box_min,
                                                      const std::array<double, 3>& box_max,
                                                      unsigned int points_per_axis) const;
-  /// Collective: takes over the state of `before`, a solver of the same slab whose mesh has
-  /// the same cells except those this one's larger hole removed: nodal displacement,
-  /// velocity and acceleration, quadrature-point histories, time, step count and running
-  /// energies and impulses; then evaluates the forces at that state. Throws std::logic_error
-  /// when a node or cell has no counterpart.
-  void take_state_from(const FarFieldSolver& before);
+  /// Collective: switches off every cell whose centre lies inside [box_min, box_max] (cells
+  /// already off stay off). They keep their place in the mesh and the dof numbering, so the
+  /// rest of the state stays where it is; the faces they share with live cells become
+  /// interface faces, the mass and boundary conditions are rebuilt, nodes of no live cell
+  /// are held at rest, and the forces are evaluated at the current state.
+  void convert_cells_inside(const std::array<double, 3>& box_min,
+                            const std::array<double, 3>& box_max);
 
   /// The evolving state of this rank in binary (collective only through the caller's order);
   /// restore() on a solver set up from the same deck on the same rank count continues the

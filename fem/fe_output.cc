@@ -34,7 +34,7 @@ std::vector<double> pack_owned_cells(const FarFieldSolver::Data& d)
   packed.reserve(d.triangulation.n_locally_owned_active_cells() * values_per_cell);
   for (const auto& cell : d.dof_handler.active_cell_iterators())
   {
-    if (!cell->is_locally_owned())
+    if (!d.owns_live(cell))
       continue;
     for (const unsigned int corner : dealii_corner_of_xdmf)
     {

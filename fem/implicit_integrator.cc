@@ -108,7 +108,7 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
   d.inertia_coupling_raw = 0.0;
   for (const auto& cell : d.dof_handler.active_cell_iterators())
   {
-    if (!cell->is_locally_owned())
+    if (!d.owns_live(cell))
       continue;
     fe_values.reinit(cell);
     cell->get_dof_indices(dofs);
@@ -200,6 +200,8 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
     d.increment_constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, im.matrix,
                                                        im.rhs);
   }
+  for (const auto dof : d.dead_dofs)
+    im.matrix.add(dof, dof, mass_factor * d.dead_dof_mass);
   im.matrix.compress(VectorOperation::add);
   im.rhs.compress(VectorOperation::add);
   d.internal_force_raw.compress(VectorOperation::add);

@@ -48,7 +48,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   const double* u_values = u_ghosted.trilinos_vector()[0];
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
-    if (!cell->is_locally_owned())
+    if (!owns_live(cell))
       continue;
     const unsigned int k = cell->active_cell_index();
     const std::size_t first = std::size_t(k) * n_q_points;
@@ -177,7 +177,7 @@ void FarFieldSolver::Data::commit_states()
   std::swap(committed_states, trial_states);
   unsigned long long n_failed = 0;
   for (const auto& cell : triangulation.active_cell_iterators())
-    if (cell->is_locally_owned())
+    if (owns_live(cell))
     {
       const std::size_t first = std::size_t(cell->active_cell_index()) * n_q_points;
       for (unsigned int q = 0; q < n_q_points; ++q)
@@ -211,7 +211,7 @@ void FarFieldSolver::Data::assemble_external_forces(const double t, Vector* cond
     dealii::Vector<double> f_local(n_dofs);
     std::vector<double> f_values(n_dofs);
     for (const auto& cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (owns_live(cell))
         for (const unsigned int f : cell->face_indices())
         {
           if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() >= n_slab_faces)
@@ -270,7 +270,7 @@ double FarFieldSolver::Data::kinetic_energy() const
   const unsigned int n_dofs = fe.n_dofs_per_cell();
   std::vector<types::global_dof_index> dofs(n_dofs);
   for (const auto& cell : dof_handler.active_cell_iterators())
-    if (cell->is_locally_owned())
+    if (owns_live(cell))
     {
       fe_values.reinit(cell);
       cell->get_dof_indices(dofs);
