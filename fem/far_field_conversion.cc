@@ -144,6 +144,7 @@ void FarFieldSolver::convert_cells_inside(const std::array<double, 3>& box_min,
   for (Data::Vector* v : {&d.velocity, &d.acceleration})
     v->compress(VectorOperation::insert);
   d.implicit.reset(); // its sparsity and constraints were those of the smaller hole
+  d.cell_local_dofs.clear(); // and the live cells with them
 
   // Forces at the current state on the new mass; an implicit integrator keeps its own
   // accelerations.

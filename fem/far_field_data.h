@@ -129,6 +129,11 @@ struct FarFieldSolver::Data
   /// Local positions in the ghosted vectors of each owned cell's dofs (by active cell index,
   /// n_dofs_per_cell each), so the cell loop reads values without a global-to-local lookup.
   std::vector<int> cell_local_dofs;
+  /// This rank's live cells in mesh order, filled with cell_local_dofs: the force
+  /// evaluation's threads share them out, then add their forces (cell_force_values, n_dofs per
+  /// live cell) in this order.
+  std::vector<dealii::DoFHandler<3>::active_cell_iterator> live_cells;
+  std::vector<double> cell_force_values;
   void index_cell_dofs(const Vector& ghosted_layout);
 
   /// Boundary forces at the current state and their integrals: over the last step for the

@@ -19,23 +19,25 @@ namespace vulnus::fem
 {
 using namespace dealii;
 
+namespace
+{
+/// What one cell's pass gives the assembly, kept per cell so that the threads' work is added
+/// in cell order (results independent of the thread count).
+struct CellForces
+{
+  double strain_energy = 0.0;
+  double dissipated = 0.0;
+  bool evaluated = false;
+};
+} // namespace
+
 EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_ghosted,
                                                               Vector* condensed)
 {
-  FEValues<3> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
   const unsigned int n_dofs = fe.n_dofs_per_cell();
-  std::vector<types::global_dof_index> dofs(n_dofs);
   std::vector<unsigned int> component(n_dofs);
   for (unsigned int i = 0; i < n_dofs; ++i)
     component[i] = fe.system_to_component_index(i).first;
-  std::vector<Tensor<1, 3>> grads(n_dofs);
-  std::vector<double> u_local(n_dofs);
-  dealii::Vector<double> f_local(n_dofs);
-  std::vector<double> f_values(n_dofs);
-  materials::PointResponse response;
-  EvaluationSums sums;
-  bool inverted = false;
-  std::string message;
 
   const materials::FailureParameters* proximity_criterion =
     prm.track_failure_proximity ? material->failure_criterion() : nullptr;
@@ -46,86 +48,134 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   if (cell_local_dofs.empty())
     index_cell_dofs(u_ghosted);
   const double* u_values = u_ghosted.trilinos_vector()[0];
-  for (const auto& cell : dof_handler.active_cell_iterators())
+  const long n_live = static_cast<long>(live_cells.size());
+  std::vector<CellForces> results(live_cells.size());
+  cell_force_values.resize(live_cells.size() * n_dofs);
+  long first_inverted = n_live;
+  std::string message;
+  unsigned long long quiet_skipped = 0;
+
+  // FEValues reuses the last cell's gradients for a cell it takes for a translation of it,
+  // which cells of equal size are to round-off: each chunk of cells starts a FEValues of its
+  // own so that the values, like the order of the sums, do not depend on the threads.
+  constexpr long chunk = 256;
+  const long n_chunks = (n_live + chunk - 1) / chunk;
+#pragma omp parallel reduction(+ : quiet_skipped)
   {
-    if (!owns_live(cell))
-      continue;
-    const unsigned int k = cell->active_cell_index();
-    const std::size_t first = std::size_t(k) * n_q_points;
-    const int* local = &cell_local_dofs[std::size_t(k) * n_dofs];
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      u_local[i] = u_values[local[i]];
-    if (skip_quiet_cells && is_quiet(u_local, cell_size[k], first))
+    std::vector<Tensor<1, 3>> grads(n_dofs);
+    std::vector<double> u_local(n_dofs);
+    materials::PointResponse response;
+#pragma omp for schedule(dynamic, 1)
+    for (long chunk_index = 0; chunk_index < n_chunks; ++chunk_index)
     {
-      // Its forces, energy and stress are those of the rest state, to a strain of 1e-12.
-      std::copy_n(committed_states.begin() + first, n_q_points, trial_states.begin() + first);
-      ++phase_times.quiet_cells_skipped;
-      continue;
-    }
-    cell->get_dof_indices(dofs);
-    fe_values.reinit(cell);
-    f_local = 0.0;
-    Tensor<2, 3> stress_sum;
-    double volume = 0.0, c_max = 0.0, proximity = 0.0;
-    unsigned char flags = 0;
-    for (unsigned int q = 0; q < n_q_points && !inverted; ++q)
+    FEValues<3> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
+    for (long c = chunk_index * chunk; c < std::min(n_live, (chunk_index + 1) * chunk); ++c)
     {
-      Tensor<2, 3> F = unit_symmetric_tensor<3>();
+      const auto& cell = live_cells[c];
+      const unsigned int k = cell->active_cell_index();
+      const std::size_t first = std::size_t(k) * n_q_points;
+      const int* local = &cell_local_dofs[std::size_t(k) * n_dofs];
       for (unsigned int i = 0; i < n_dofs; ++i)
+        u_local[i] = u_values[local[i]];
+      if (skip_quiet_cells && is_quiet(u_local, cell_size[k], first))
       {
-        grads[i] = fe_values.shape_grad_component(i, q, component[i]);
-        F[component[i]] += u_local[i] * grads[i];
+        // Its forces, energy and stress are those of the rest state, to a strain of 1e-12.
+        std::copy_n(committed_states.begin() + first, n_q_points, trial_states.begin() + first);
+        ++quiet_skipped;
+        continue;
       }
-      materials::PointState& state = trial_states[first + q];
-      state = committed_states[first + q];
-      try
+      fe_values.reinit(cell);
+      double* f_local = &cell_force_values[std::size_t(c) * n_dofs];
+      std::fill_n(f_local, n_dofs, 0.0);
+      CellForces& r = results[c];
+      Tensor<2, 3> stress_sum;
+      double volume = 0.0, c_max = 0.0, proximity = 0.0;
+      unsigned char flags = 0;
+      bool inverted = false;
+      for (unsigned int q = 0; q < n_q_points; ++q)
       {
-        material->update(to_eigen(F), fiber_directions[first + q], state, response);
+        Tensor<2, 3> F = unit_symmetric_tensor<3>();
+        for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          grads[i] = fe_values.shape_grad_component(i, q, component[i]);
+          F[component[i]] += u_local[i] * grads[i];
+        }
+        materials::PointState& state = trial_states[first + q];
+        state = committed_states[first + q];
+        try
+        {
+          material->update(to_eigen(F), fiber_directions[first + q], state, response);
+        }
+        catch (const std::runtime_error& e)
+        {
+          inverted = true;
+#pragma omp critical(far_field_inverted_cell)
+          if (c < first_inverted)
+          {
+            first_inverted = c;
+            message = std::string("FE: ") + e.what() + " in the cell at " +
+                      std::to_string(cell->center()[0]) + " " +
+                      std::to_string(cell->center()[1]) + " " +
+                      std::to_string(cell->center()[2]) + " m";
+          }
+          break;
+        }
+        const double J = determinant(F);
+        const Tensor<2, 3> sigma = to_dealii(response.cauchy_stress);
+        const Tensor<2, 3> P = J * sigma * transpose(invert(F));
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          f_local[i] += (P[component[i]] * grads[i]) * JxW;
+        r.strain_energy += response.energy_density * JxW;
+        r.dissipated += response.dissipated_density * JxW;
+        stress_sum += JxW * sigma;
+        volume += JxW;
+        c_max = std::max(c_max, std::sqrt(response.p_wave_modulus * J / prm.density));
+        flags |= state.failure;
+        if (proximity_criterion != nullptr)
+        {
+          const Eigen::Matrix3d Fe = to_eigen(F);
+          proximity = std::max(proximity, materials::matrix_shear_bound(*proximity_criterion, Fe) /
+                                            proximity_criterion->matrix_shear_limit);
+          if (fibers)
+            proximity = std::max(proximity, ((Fe * fiber_directions[first + q]).norm() - 1.0) /
+                                              (proximity_criterion->fiber_stretch_limit - 1.0));
+        }
       }
-      catch (const std::runtime_error& e)
-      {
-        inverted = true;
-        message = std::string("FE: ") + e.what() + " in the cell at " +
-                  std::to_string(cell->center()[0]) + " " + std::to_string(cell->center()[1]) +
-                  " " + std::to_string(cell->center()[2]) + " m";
-        break;
-      }
-      const double J = determinant(F);
-      const Tensor<2, 3> sigma = to_dealii(response.cauchy_stress);
-      const Tensor<2, 3> P = J * sigma * transpose(invert(F));
-      const double JxW = fe_values.JxW(q);
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        f_local(i) += (P[component[i]] * grads[i]) * JxW;
-      sums.strain_energy += response.energy_density * JxW;
-      sums.dissipated += response.dissipated_density * JxW;
-      stress_sum += JxW * sigma;
-      volume += JxW;
-      c_max = std::max(c_max, std::sqrt(response.p_wave_modulus * J / prm.density));
-      flags |= state.failure;
+      if (inverted)
+        continue;
+      r.evaluated = true;
+      cell_stress[k] = stress_sum / volume;
+      cell_failure[k] = flags;
+      cell_wave_speed[k] = c_max;
       if (proximity_criterion != nullptr)
-      {
-        const Eigen::Matrix3d Fe = to_eigen(F);
-        proximity = std::max(proximity, materials::matrix_shear_bound(*proximity_criterion, Fe) /
-                                          proximity_criterion->matrix_shear_limit);
-        if (fibers)
-          proximity = std::max(proximity, ((Fe * fiber_directions[first + q]).norm() - 1.0) /
-                                            (proximity_criterion->fiber_stretch_limit - 1.0));
-      }
+        cell_failure_proximity[k] =
+          flags != materials::intact ? std::numeric_limits<double>::infinity() : proximity;
     }
-    if (inverted)
-      break;
-    cell_stress[k] = stress_sum / volume;
-    cell_failure[k] = flags;
-    cell_wave_speed[k] = c_max;
-    if (proximity_criterion != nullptr)
-      cell_failure_proximity[k] =
-        flags != materials::intact ? std::numeric_limits<double>::infinity() : proximity;
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      f_values[i] = f_local(i);
+    }
+  }
+  phase_times.quiet_cells_skipped += quiet_skipped;
+
+  // The cells' forces in cell order, as a serial loop would add them.
+  EvaluationSums sums;
+  const bool inverted = first_inverted < n_live;
+  std::vector<types::global_dof_index> dofs(n_dofs);
+  dealii::Vector<double> f_local(n_dofs);
+  std::vector<double> f_values(n_dofs);
+  for (long c = 0; c < n_live && !inverted; ++c)
+  {
+    if (!results[c].evaluated)
+      continue;
+    sums.strain_energy += results[c].strain_energy;
+    sums.dissipated += results[c].dissipated;
+    live_cells[c]->get_dof_indices(dofs);
+    const double* f = &cell_force_values[std::size_t(c) * n_dofs];
+    std::copy_n(f, n_dofs, f_values.begin());
     internal_force_raw.add(dofs, f_values);
     if (condensed != nullptr)
     {
-      f_local *= -1.0;
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        f_local(i) = -f[i];
       hanging_constraints.distribute_local_to_global(f_local, dofs, *condensed);
     }
   }
@@ -142,11 +192,14 @@ void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)
   const Epetra_BlockMap& map = ghosted_layout.trilinos_vector().Map();
   std::vector<types::global_dof_index> dofs(n_dofs);
   cell_local_dofs.assign(std::size_t(triangulation.n_active_cells()) * n_dofs, 0);
+  live_cells.clear();
   bool missing = false;
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
     if (!cell->is_locally_owned())
       continue;
+    if (!is_converted(cell))
+      live_cells.push_back(cell);
     cell->get_dof_indices(dofs);
     for (unsigned int i = 0; i < n_dofs; ++i)
     {
