@@ -8,7 +8,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
-
 namespace vulnus::fem
 {
 using namespace dealii;
@@ -118,6 +117,8 @@ void FarFieldSolver::convert_cells_inside(const std::array<double, 3>& box_min,
                                           const std::array<double, 3>& box_max)
 {
   Data& d = *data;
+  AssertThrow(d.triangulation.n_global_levels() == 1,
+              ExcMessage("converting far-field cells needs an unrefined mesh"));
   if (d.cell_converted.empty())
     d.cell_converted.assign(d.triangulation.n_active_cells(), 0);
   // Every rank holds every cell of the unrefined mesh (artificial ones too), so each decides
@@ -147,11 +148,20 @@ void FarFieldSolver::convert_cells_inside(const std::array<double, 3>& box_min,
   d.cell_local_dofs.clear(); // and the live cells with them
 
   // Forces at the current state on the new mass; an implicit integrator keeps its own
-  // accelerations.
+  // accelerations, and Dirichlet dofs keep theirs (the evaluation gives them none). The
+  // converted cells' histories are no longer evaluated: trial = committed keeps the commits'
+  // swap from alternating them.
+  d.trial_states = d.committed_states;
   const Data::Vector acceleration = d.acceleration;
   evaluate_explicit_forces(d.time);
   if (d.is_implicit())
     d.acceleration = acceleration;
+  else
+  {
+    for (const DirichletDof& dirichlet : d.dirichlet_dofs)
+      d.acceleration(dirichlet.dof) = acceleration(dirichlet.dof);
+    d.acceleration.compress(VectorOperation::insert);
+  }
   d.inertia_coupling_raw = 0.0;
   for (unsigned int n = 0; n < d.interface_nodes.size(); ++n)
     d.interface_velocity_targets[n] = velocity(d.interface_nodes[n]);

@@ -183,12 +183,15 @@ struct FarFieldSolver::Data
   /// Velocity of a Dirichlet dof at time t.
   double dirichlet_velocity(const DirichletDof& d, double t) const;
 
-  /// One pass over the locally owned cells at the displacement `u` (ghosted): updates the
-  /// trial states from the committed ones, the cell stress, failure and wave speed, and adds
+  /// One pass over the live owned cells at the displacement `u` (ghosted), shared among the
+  /// threads: updates the trial states from the committed ones, the cell stress, failure, wave
+  /// speed and failure proximity, and adds
   /// f_int to internal_force_raw (zeroed first) and, when condensed is non-null, -f_int to
   /// *condensed through the hanging-node constraints. Throws (on all ranks) when an element
   /// inverts.
   EvaluationSums evaluate_internal_forces(const Vector& u_ghosted, Vector* condensed);
+  /// The failure criterion whose proximity the cells track, or null when none is tracked.
+  const materials::FailureParameters* proximity_criterion() const;
   /// Makes the trial states the committed ones; counts failed points and warns loudly.
   void commit_states();
   /// Assembles f_ext(t) into external_force_raw (tractions and interface forces) and adds
@@ -209,6 +212,12 @@ struct FarFieldSolver::Data
 /// The Newmark velocity weight gamma of the configured integrator (1/2 for the explicit and the
 /// average-acceleration steps).
 double integrator_gamma(const FeSceneParameters& prm);
+
+/// The failure proximity of one point (FeSceneParameters::track_failure_proximity): the larger
+/// of the matrix shear's upper bound over its limit and, with a fiber, (fiber stretch - 1) /
+/// (limit - 1).
+double failure_proximity(const materials::FailureParameters& criterion, const Eigen::Matrix3d& F,
+                         const Eigen::Vector3d* fiber);
 
 /// Collective: the owned nodes, boundary faces (the converted cells' faces next to live cells
 /// among the interface faces), Dirichlet dofs, interface nodes, dead dofs and lumped mass, for

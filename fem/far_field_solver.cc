@@ -234,7 +234,9 @@ void build_dirichlet_constraints(Data& d,
   d.dead_dofs.clear();
   if (d.n_converted_cells > 0)
   {
-    // Every cell holding a relevant dof is owned or a ghost, so the live ones tell which are dead.
+    // Every cell holding an owned dof is owned or a ghost, so the live ones tell which owned
+    // dofs are dead (a ghost dof on the ghost layer's rim may be marked dead without being so;
+    // only owned rows and owned cells use these lines).
     std::vector<char> live(d.relevant_dofs.n_elements(), 0);
     std::vector<types::global_dof_index> dofs(d.fe.n_dofs_per_cell());
     for (const auto& cell : d.dof_handler.active_cell_iterators())
@@ -343,8 +345,7 @@ void build_lumped_mass(Data& d)
   for (const DirichletDof& dirichlet : d.dirichlet_dofs)
     d.inverse_mass(dirichlet.dof) = 0.0;
   d.inverse_mass.compress(VectorOperation::insert);
-  const double n_owned = Utilities::MPI::sum(double(d.owned_dofs.n_elements()), d.comm);
-  d.dead_dof_mass = d.lumped_mass.l1_norm() / std::max(n_owned, 1.0);
+  d.dead_dof_mass = d.lumped_mass.l1_norm() / std::max(double(d.dof_handler.n_dofs()), 1.0);
 }
 } // namespace
 

@@ -106,7 +106,7 @@ struct ImplicitStepStatistics
 ///
 /// MPI: every call is collective unless stated otherwise.
 /// The far field's mesh for output: every vertex once, at its current position, joined into
-/// the active cells as linear hexahedra (a quadratic element's mid-side nodes are left out).
+/// the live (not converted) cells as linear hexahedra (a quadratic element's mid-side nodes are left out).
 struct FeMeshForOutput
 {
   std::vector<double> positions;    ///< n_vertices x 3, m (reference + displacement)
@@ -170,7 +170,7 @@ public:
   const std::vector<NodeRecord>& locally_owned_nodes() const;
   dealii::Tensor<1, 3> displacement(const NodeRecord& node) const;
   dealii::Tensor<1, 3> velocity(const NodeRecord& node) const;
-  /// Volume-average Cauchy stress of each locally owned cell (not collective), Pa, with the
+  /// Volume-average Cauchy stress of each live locally owned cell (not collective), Pa, with the
   /// cell centres; and the volume average over the whole mesh (collective).
   void locally_owned_cell_stresses(std::vector<dealii::Point<3>>& centres,
                                    std::vector<dealii::Tensor<2, 3>>& stresses) const;
@@ -201,8 +201,8 @@ public:
   /// the measure's factor, at most 1.16 times the exact value) over its limit and (fiber
   /// stretch - 1) / (limit - 1). Needs FeSceneParameters::track_failure_proximity.
   std::vector<dealii::Point<3>> cells_nearing_failure(double threshold) const;
-  /// Material points for this rank's cells whose centre lies inside [box_min, box_max] (not
-  /// collective): points_per_axis^3 per cell at the midpoints of equal sub-cells (the MPM
+  /// Collective: material points for this rank's live cells whose centre lies inside
+  /// [box_min, box_max]: points_per_axis^3 per cell at the midpoints of equal sub-cells (the MPM
   /// lattice), each with the fields interpolated there and the history of the Gauss point
   /// in its octant. Linear elements only.
   std::vector<ConvertedPoint> material_points_inside(const std::array<double, 3>& box_min,
@@ -217,8 +217,8 @@ public:
                             const std::array<double, 3>& box_max);
 
   /// The evolving state of this rank in binary (collective only through the caller's order);
-  /// restore() on a solver set up from the same deck on the same rank count continues the
-  /// explicit run bit for bit. Throws std::runtime_error on a mismatch or a short stream.
+  /// restore() on a solver set up from the same deck on the same rank count, with the same
+  /// cells converted, continues the explicit run bit for bit. Throws std::runtime_error on a mismatch or a short stream.
   void save(std::ostream& out) const;
   void restore(std::istream& in);
 

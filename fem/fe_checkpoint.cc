@@ -12,7 +12,7 @@ namespace binary = mpm::binary;
 
 namespace
 {
-constexpr char tag[8] = {'V', 'U', 'L', 'F', 'E', 'C', 'K', '1'};
+constexpr char tag[8] = {'V', 'U', 'L', 'F', 'E', 'C', 'K', '2'};
 
 /// The running scalars, in checkpoint order, for save (put) and restore (get) alike.
 template <class Data, class Visit>
@@ -72,6 +72,8 @@ void FarFieldSolver::save(std::ostream& out) const
   binary::put_vector(out, stresses);
   binary::put_vector(out, d.cell_failure);
   binary::put_vector(out, d.cell_wave_speed);
+  binary::put_vector(out, d.cell_failure_proximity);
+  binary::put(out, d.n_converted_cells);
   put_tensors(out, d.interface_velocity_targets);
   put_tensors(out, d.boundary_now.interface);
   put_tensors(out, d.interface_impulse_last_step);
@@ -113,9 +115,19 @@ void FarFieldSolver::restore(std::istream& in)
   binary::get_vector(in, failure);
   std::vector<double> wave_speed;
   binary::get_vector(in, wave_speed);
+  std::vector<double> proximity;
+  binary::get_vector(in, proximity);
+  unsigned long long n_converted = 0;
+  binary::get(in, n_converted);
   if (states.size() != d.committed_states.size() || stresses.size() != 9 * d.cell_stress.size() ||
-      failure.size() != d.cell_failure.size() || wave_speed.size() != d.cell_wave_speed.size())
+      failure.size() != d.cell_failure.size() || wave_speed.size() != d.cell_wave_speed.size() ||
+      proximity.size() != d.cell_failure_proximity.size())
     throw std::runtime_error("FE checkpoint is inconsistent (cell data lengths)");
+  if (n_converted != d.n_converted_cells)
+    throw std::runtime_error("FE checkpoint was written with " + std::to_string(n_converted) +
+                             " far-field cells converted, this far field has " +
+                             std::to_string(d.n_converted_cells) + ": convert the same cells first");
+  d.cell_failure_proximity = proximity;
   d.committed_states = states;
   d.trial_states = states;
   for (std::size_t c = 0; c < d.cell_stress.size(); ++c)

@@ -1,4 +1,4 @@
-// The far field's mesh for output: each rank packs its owned cells (corner positions,
+// The far field's mesh for output: each rank packs its live owned cells (corner positions,
 // displacement and velocity at the corners, cell stress, failure, rank), rank 0 gathers them
 // and merges the corners that several cells share into one vertex.
 #include "fem/far_field_data.h"

@@ -18,6 +18,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <sstream>
 
@@ -98,6 +99,8 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
   FullMatrix<double> cell_matrix(n_dofs, n_dofs);
   dealii::Vector<double> cell_rhs(n_dofs);
   materials::PointResponse response;
+  const materials::FailureParameters* criterion = d.proximity_criterion();
+  const bool fibers = d.material->uses_fibers();
   EvaluationSums sums;
   bool inverted = false;
   std::string message;
@@ -124,7 +127,7 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
     std::fill(f_values.begin(), f_values.end(), 0.0);
     std::fill(inertia_values.begin(), inertia_values.end(), 0.0);
     Tensor<2, 3> stress_sum;
-    double volume = 0.0, c_max = 0.0;
+    double volume = 0.0, c_max = 0.0, proximity = 0.0;
     unsigned char flags = 0;
     for (unsigned int q = 0; q < d.n_q_points; ++q)
     {
@@ -189,12 +192,19 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
       volume += JxW;
       c_max = std::max(c_max, std::sqrt(response.p_wave_modulus * J / d.prm.density));
       flags |= state.failure;
+      if (criterion != nullptr)
+        proximity = std::max(proximity, failure_proximity(*criterion, F_eigen,
+                                                          fibers ? &d.fiber_directions[first + q]
+                                                                 : nullptr));
     }
     if (inverted)
       break;
     d.cell_stress[k] = stress_sum / volume;
     d.cell_failure[k] = flags;
     d.cell_wave_speed[k] = c_max;
+    if (criterion != nullptr)
+      d.cell_failure_proximity[k] =
+        flags != materials::intact ? std::numeric_limits<double>::infinity() : proximity;
     d.internal_force_raw.add(dofs, f_values);
     d.inertia_coupling_raw.add(dofs, inertia_values);
     d.increment_constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, im.matrix,

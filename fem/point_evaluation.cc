@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <exception>
 #include <cmath>
 #include <limits>
 #include <iostream>
@@ -39,10 +40,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   for (unsigned int i = 0; i < n_dofs; ++i)
     component[i] = fe.system_to_component_index(i).first;
 
-  const materials::FailureParameters* proximity_criterion =
-    prm.track_failure_proximity ? material->failure_criterion() : nullptr;
-  if (proximity_criterion != nullptr && !proximity_criterion->enabled)
-    proximity_criterion = nullptr;
+  const materials::FailureParameters* criterion = proximity_criterion();
   const bool fibers = material->uses_fibers();
   internal_force_raw = 0.0;
   if (cell_local_dofs.empty())
@@ -51,9 +49,97 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   const long n_live = static_cast<long>(live_cells.size());
   std::vector<CellForces> results(live_cells.size());
   cell_force_values.resize(live_cells.size() * n_dofs);
-  long first_inverted = n_live;
+  long first_failed = n_live;
   std::string message;
+  std::exception_ptr unexpected;
   unsigned long long quiet_skipped = 0;
+
+  struct Scratch
+  {
+    std::vector<Tensor<1, 3>> grads;
+    std::vector<double> u_local;
+    materials::PointResponse response;
+  };
+  // Records the failure of live cell c: the first in cell order is reported.
+  auto record_failure = [&](const long c, const std::string& what, std::exception_ptr error)
+  {
+#pragma omp critical(far_field_failed_cell)
+    if (c < first_failed)
+    {
+      first_failed = c;
+      const Point<3> x = live_cells[c]->center();
+      message = "FE: " + what + " in the cell at " + std::to_string(x[0]) + " " +
+                std::to_string(x[1]) + " " + std::to_string(x[2]) + " m";
+      unexpected = error;
+    }
+  };
+  // One live cell's forces, energies, stress, failure, wave speed and failure proximity.
+  enum class Outcome { evaluated, quiet, failed };
+  auto evaluate_cell = [&](const long c, FEValues<3>& fe_values, Scratch& w) -> Outcome
+  {
+    const auto& cell = live_cells[c];
+    const unsigned int k = cell->active_cell_index();
+    const std::size_t first = std::size_t(k) * n_q_points;
+    const int* local = &cell_local_dofs[std::size_t(k) * n_dofs];
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      w.u_local[i] = u_values[local[i]];
+    if (skip_quiet_cells && is_quiet(w.u_local, cell_size[k], first))
+    {
+      // Its forces, energy and stress are those of the rest state, to a strain of 1e-12.
+      std::copy_n(committed_states.begin() + first, n_q_points, trial_states.begin() + first);
+      return Outcome::quiet;
+    }
+    fe_values.reinit(cell);
+    double* f_local = &cell_force_values[std::size_t(c) * n_dofs];
+    std::fill_n(f_local, n_dofs, 0.0);
+    CellForces& r = results[c];
+    Tensor<2, 3> stress_sum;
+    double volume = 0.0, c_max = 0.0, proximity = 0.0;
+    unsigned char flags = 0;
+    for (unsigned int q = 0; q < n_q_points; ++q)
+    {
+      Tensor<2, 3> F = unit_symmetric_tensor<3>();
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        w.grads[i] = fe_values.shape_grad_component(i, q, component[i]);
+        F[component[i]] += w.u_local[i] * w.grads[i];
+      }
+      materials::PointState& state = trial_states[first + q];
+      state = committed_states[first + q];
+      try
+      {
+        material->update(to_eigen(F), fiber_directions[first + q], state, w.response);
+      }
+      catch (const std::runtime_error& e)
+      {
+        record_failure(c, e.what(), nullptr);
+        return Outcome::failed;
+      }
+      const double J = determinant(F);
+      const Tensor<2, 3> sigma = to_dealii(w.response.cauchy_stress);
+      const Tensor<2, 3> P = J * sigma * transpose(invert(F));
+      const double JxW = fe_values.JxW(q);
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        f_local[i] += (P[component[i]] * w.grads[i]) * JxW;
+      r.strain_energy += w.response.energy_density * JxW;
+      r.dissipated += w.response.dissipated_density * JxW;
+      stress_sum += JxW * sigma;
+      volume += JxW;
+      c_max = std::max(c_max, std::sqrt(w.response.p_wave_modulus * J / prm.density));
+      flags |= state.failure;
+      if (criterion != nullptr)
+        proximity = std::max(proximity, failure_proximity(*criterion, to_eigen(F),
+                                                          fibers ? &fiber_directions[first + q]
+                                                                 : nullptr));
+    }
+    cell_stress[k] = stress_sum / volume;
+    cell_failure[k] = flags;
+    cell_wave_speed[k] = c_max;
+    if (criterion != nullptr)
+      cell_failure_proximity[k] =
+        flags != materials::intact ? std::numeric_limits<double>::infinity() : proximity;
+    return Outcome::evaluated;
+  };
 
   // FEValues reuses the last cell's gradients for a cell it takes for a translation of it,
   // which cells of equal size are to round-off: each chunk of cells starts a FEValues of its
@@ -62,103 +148,37 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   const long n_chunks = (n_live + chunk - 1) / chunk;
 #pragma omp parallel reduction(+ : quiet_skipped)
   {
-    std::vector<Tensor<1, 3>> grads(n_dofs);
-    std::vector<double> u_local(n_dofs);
-    materials::PointResponse response;
+    Scratch w{std::vector<Tensor<1, 3>>(n_dofs), std::vector<double>(n_dofs), {}};
 #pragma omp for schedule(dynamic, 1)
     for (long chunk_index = 0; chunk_index < n_chunks; ++chunk_index)
     {
-    FEValues<3> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
-    for (long c = chunk_index * chunk; c < std::min(n_live, (chunk_index + 1) * chunk); ++c)
-    {
-      const auto& cell = live_cells[c];
-      const unsigned int k = cell->active_cell_index();
-      const std::size_t first = std::size_t(k) * n_q_points;
-      const int* local = &cell_local_dofs[std::size_t(k) * n_dofs];
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        u_local[i] = u_values[local[i]];
-      if (skip_quiet_cells && is_quiet(u_local, cell_size[k], first))
+      const long end = std::min(n_live, (chunk_index + 1) * chunk);
+      long c = chunk_index * chunk;
+      try
       {
-        // Its forces, energy and stress are those of the rest state, to a strain of 1e-12.
-        std::copy_n(committed_states.begin() + first, n_q_points, trial_states.begin() + first);
-        ++quiet_skipped;
-        continue;
-      }
-      fe_values.reinit(cell);
-      double* f_local = &cell_force_values[std::size_t(c) * n_dofs];
-      std::fill_n(f_local, n_dofs, 0.0);
-      CellForces& r = results[c];
-      Tensor<2, 3> stress_sum;
-      double volume = 0.0, c_max = 0.0, proximity = 0.0;
-      unsigned char flags = 0;
-      bool inverted = false;
-      for (unsigned int q = 0; q < n_q_points; ++q)
-      {
-        Tensor<2, 3> F = unit_symmetric_tensor<3>();
-        for (unsigned int i = 0; i < n_dofs; ++i)
+        FEValues<3> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
+        for (; c < end; ++c)
         {
-          grads[i] = fe_values.shape_grad_component(i, q, component[i]);
-          F[component[i]] += u_local[i] * grads[i];
-        }
-        materials::PointState& state = trial_states[first + q];
-        state = committed_states[first + q];
-        try
-        {
-          material->update(to_eigen(F), fiber_directions[first + q], state, response);
-        }
-        catch (const std::runtime_error& e)
-        {
-          inverted = true;
-#pragma omp critical(far_field_inverted_cell)
-          if (c < first_inverted)
-          {
-            first_inverted = c;
-            message = std::string("FE: ") + e.what() + " in the cell at " +
-                      std::to_string(cell->center()[0]) + " " +
-                      std::to_string(cell->center()[1]) + " " +
-                      std::to_string(cell->center()[2]) + " m";
-          }
-          break;
-        }
-        const double J = determinant(F);
-        const Tensor<2, 3> sigma = to_dealii(response.cauchy_stress);
-        const Tensor<2, 3> P = J * sigma * transpose(invert(F));
-        const double JxW = fe_values.JxW(q);
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          f_local[i] += (P[component[i]] * grads[i]) * JxW;
-        r.strain_energy += response.energy_density * JxW;
-        r.dissipated += response.dissipated_density * JxW;
-        stress_sum += JxW * sigma;
-        volume += JxW;
-        c_max = std::max(c_max, std::sqrt(response.p_wave_modulus * J / prm.density));
-        flags |= state.failure;
-        if (proximity_criterion != nullptr)
-        {
-          const Eigen::Matrix3d Fe = to_eigen(F);
-          proximity = std::max(proximity, materials::matrix_shear_bound(*proximity_criterion, Fe) /
-                                            proximity_criterion->matrix_shear_limit);
-          if (fibers)
-            proximity = std::max(proximity, ((Fe * fiber_directions[first + q]).norm() - 1.0) /
-                                              (proximity_criterion->fiber_stretch_limit - 1.0));
+          const Outcome outcome = evaluate_cell(c, fe_values, w);
+          results[c].evaluated = outcome == Outcome::evaluated;
+          quiet_skipped += outcome == Outcome::quiet ? 1 : 0;
         }
       }
-      if (inverted)
-        continue;
-      r.evaluated = true;
-      cell_stress[k] = stress_sum / volume;
-      cell_failure[k] = flags;
-      cell_wave_speed[k] = c_max;
-      if (proximity_criterion != nullptr)
-        cell_failure_proximity[k] =
-          flags != materials::intact ? std::numeric_limits<double>::infinity() : proximity;
-    }
+      catch (const std::exception& e) // nothing may leave the parallel region
+      {
+        record_failure(std::min(c, n_live - 1), e.what(), std::current_exception());
+      }
+      catch (...)
+      {
+        record_failure(std::min(c, n_live - 1), "unknown error", std::current_exception());
+      }
     }
   }
   phase_times.quiet_cells_skipped += quiet_skipped;
 
   // The cells' forces in cell order, as a serial loop would add them.
   EvaluationSums sums;
-  const bool inverted = first_inverted < n_live;
+  const bool inverted = first_failed < n_live;
   std::vector<types::global_dof_index> dofs(n_dofs);
   dealii::Vector<double> f_local(n_dofs);
   std::vector<double> f_values(n_dofs);
@@ -182,8 +202,30 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   internal_force_raw.compress(VectorOperation::add);
   if (condensed != nullptr)
     condensed->compress(VectorOperation::add);
-  throw_if_any(inverted, message, comm);
+  if (Utilities::MPI::max(unexpected ? 1 : 0, comm) == 0)
+    throw_if_any(inverted, message, comm);
+  else if (unexpected)
+    std::rethrow_exception(unexpected);
+  else
+    throw std::runtime_error("FE: failure on another MPI rank");
   return sums;
+}
+
+const materials::FailureParameters* FarFieldSolver::Data::proximity_criterion() const
+{
+  const materials::FailureParameters* criterion =
+    prm.track_failure_proximity ? material->failure_criterion() : nullptr;
+  return criterion != nullptr && criterion->enabled ? criterion : nullptr;
+}
+
+double failure_proximity(const materials::FailureParameters& criterion, const Eigen::Matrix3d& F,
+                         const Eigen::Vector3d* fiber)
+{
+  double proximity = materials::matrix_shear_bound(criterion, F) / criterion.matrix_shear_limit;
+  if (fiber != nullptr)
+    proximity =
+      std::max(proximity, ((F * *fiber).norm() - 1.0) / (criterion.fiber_stretch_limit - 1.0));
+  return proximity;
 }
 
 void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)

@@ -249,7 +249,8 @@ TEST_P(AdaptiveZone, FailureAndPlasticHistoryCarryOver)
   }
 }
 
-// The same patch with a Newmark far field (windows of one MPM step): the converted cells stay
+// The same patch with a Newmark far field (windows of one MPM step): its cells keep their
+// failure proximity through the Newton assembly; the converted cells stay
 // in its mesh, their nodes without a live cell are held by unit rows of the Newton matrix. The
 // conversion at 0.5 ms keeps mass and momentum (to the Newton tolerance, 1e-8 of the force
 // scale), no far-field node is left inside the grown zone, and the motion at 1 ms is the
@@ -258,10 +259,15 @@ TEST(AdaptiveZoneImplicit, ConvertedCellsLeaveANewmarkFarFieldThatKeepsTheMotion
 {
   const Eigen::Matrix3d L = patch_gradient();
   std::unique_ptr<HybridSolver> holder;
-  HybridSolver& solver = patch_solver(holder, CouplingScheme::multi_step, L,
-                                      testing::elastic_isotropic(), fem::TimeIntegrator::newmark);
+  materials::MaterialParameters material = testing::elastic_isotropic();
+  material.tissue.failure.enabled = true; // limits far above the patch's 0.05 % strain
+  HybridSolver& solver =
+    patch_solver(holder, CouplingScheme::multi_step, L, material, fem::TimeIntegrator::newmark);
   const unsigned long long cells_at_start = solver.fe().n_active_cells();
   advance_to_window_end(solver, 0.5e-3);
+  // The Newton assembly keeps every strained cell's failure proximity, which the zone grows by.
+  EXPECT_FALSE(solver.fe().cells_nearing_failure(1e-9).empty());
+  EXPECT_TRUE(solver.fe().cells_nearing_failure(0.5).empty());
   solver.grow_zone(grown_lo, grown_hi);
   ASSERT_EQ(solver.conversions().size(), 1u);
   const ZoneConversion& c = solver.conversions().front();
