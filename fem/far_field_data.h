@@ -164,6 +164,7 @@ struct FarFieldSolver::Data
   /// Owned dofs of no live cell: no mass, held at rest, a unit-mass row in the implicit
   /// matrix (scaled by dead_dof_mass).
   std::vector<dealii::types::global_dof_index> dead_dofs;
+  unsigned long long n_dead_dofs = 0; ///< over all ranks
   double dead_dof_mass = 0.0;
 
   template <class CellIterator>

@@ -346,6 +346,7 @@ void build_lumped_mass(Data& d)
     d.inverse_mass(dirichlet.dof) = 0.0;
   d.inverse_mass.compress(VectorOperation::insert);
   d.dead_dof_mass = d.lumped_mass.l1_norm() / std::max(double(d.dof_handler.n_dofs()), 1.0);
+  d.n_dead_dofs = Utilities::MPI::sum(static_cast<unsigned long long>(d.dead_dofs.size()), d.comm);
 }
 } // namespace
 
@@ -479,7 +480,7 @@ unsigned long long FarFieldSolver::n_active_cells() const
 }
 unsigned long long FarFieldSolver::n_dofs() const
 {
-  return data->dof_handler.n_dofs();
+  return data->dof_handler.n_dofs() - data->n_dead_dofs;
 }
 unsigned long long FarFieldSolver::n_quadrature_points() const
 {

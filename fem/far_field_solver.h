@@ -162,6 +162,7 @@ public:
   const FePhaseTimes& explicit_phase_times() const;
   unsigned long long n_failed_points() const;
   unsigned long long n_active_cells() const;
+  /// Dofs of the live cells (converted cells' own nodes left out).
   unsigned long long n_dofs() const;
   unsigned long long n_quadrature_points() const;
 
