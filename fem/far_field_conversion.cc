@@ -40,6 +40,16 @@ void evaluate_cell(const FEValues<3>& fe_values, const std::vector<types::global
     }
   }
 }
+
+/// A cell belongs to a box when its centre lies strictly inside (box faces are mesh planes).
+bool centre_inside(const Point<3>& c, const std::array<double, 3>& box_min,
+                   const std::array<double, 3>& box_max)
+{
+  for (unsigned int a = 0; a < 3; ++a)
+    if (!(c[a] > box_min[a] && c[a] < box_max[a]))
+      return false;
+  return true;
+}
 } // namespace
 
 std::vector<Point<3>> FarFieldSolver::cells_nearing_failure(const double threshold) const
@@ -82,13 +92,7 @@ FarFieldSolver::material_points_inside(const std::array<double, 3>& box_min,
   std::vector<ConvertedPoint> points;
   for (const auto& cell : d.dof_handler.active_cell_iterators())
   {
-    if (!d.owns_live(cell))
-      continue;
-    const Point<3> c = cell->center();
-    bool inside = true;
-    for (unsigned int a = 0; a < 3 && inside; ++a)
-      inside = c[a] > box_min[a] && c[a] < box_max[a];
-    if (!inside)
+    if (!d.owns_live(cell) || !centre_inside(cell->center(), box_min, box_max))
       continue;
     fe_values.reinit(cell);
     cell->get_dof_indices(dofs);
@@ -125,12 +129,8 @@ void FarFieldSolver::convert_cells_inside(const std::array<double, 3>& box_min,
   // all of them alike, ghosts and neighbours across ranks included.
   for (const auto& cell : d.triangulation.active_cell_iterators())
   {
-    const Point<3> c = cell->center();
-    bool inside = true;
-    for (unsigned int a = 0; a < 3 && inside; ++a)
-      inside = c[a] > box_min[a] && c[a] < box_max[a];
     unsigned char& converted = d.cell_converted[cell->active_cell_index()];
-    if (inside && !converted)
+    if (!converted && centre_inside(cell->center(), box_min, box_max))
     {
       converted = 1;
       ++d.n_converted_cells;

@@ -104,11 +104,12 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
         w.grads[i] = fe_values.shape_grad_component(i, q, component[i]);
         F[component[i]] += w.u_local[i] * w.grads[i];
       }
+      const Eigen::Matrix3d F_eigen = to_eigen(F);
       materials::PointState& state = trial_states[first + q];
       state = committed_states[first + q];
       try
       {
-        material->update(to_eigen(F), fiber_directions[first + q], state, w.response);
+        material->update(F_eigen, fiber_directions[first + q], state, w.response);
       }
       catch (const std::runtime_error& e)
       {
@@ -128,7 +129,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       c_max = std::max(c_max, std::sqrt(w.response.p_wave_modulus * J / prm.density));
       flags |= state.failure;
       if (criterion != nullptr)
-        proximity = std::max(proximity, failure_proximity(*criterion, to_eigen(F),
+        proximity = std::max(proximity, failure_proximity(*criterion, F_eigen,
                                                           fibers ? &fiber_directions[first + q]
                                                                  : nullptr));
     }
