@@ -157,6 +157,8 @@ void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
   match_interface_nodes(comm);
   for (std::vector<mpm::Vector3>* v : {&velocity_start, &velocity_end, &created, &correction})
     v->assign(keys.size(), mpm::Vector3::Zero());
+  // Balanced windows: the interface changed, so does the far field's effective mass.
+  balance_matrix.resize(0, 0);
   const mpm::Grid& grid = mpm_solver->background_grid();
   for (const auto& [key, impulse] : pending)
   {

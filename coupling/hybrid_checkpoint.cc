@@ -9,7 +9,7 @@ namespace binary = mpm::binary;
 
 namespace
 {
-constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '2'};
+constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '3'};
 } // namespace
 
 void HybridSolver::save(std::ostream& out) const
@@ -31,6 +31,19 @@ void HybridSolver::save(std::ostream& out) const
   binary::put(out, last_zone_check);
   binary::put(out, n_cells_beyond_limit);
   binary::put_vector(out, zone_conversions);
+  // Balanced windows: the far field's state at the window's start (a checkpoint may fall
+  // inside a window), its step's impulses, the interface now and the effective-mass matrix.
+  binary::put(out, static_cast<std::uint64_t>(fe_state_at_window_start.size()));
+  out.write(fe_state_at_window_start.data(),
+            static_cast<std::streamsize>(fe_state_at_window_start.size()));
+  binary::put_vector(out, fe_window_impulse);
+  binary::put_vector(out, interface_now);
+  binary::put(out, balance_window_length);
+  binary::put(out, balance_scale);
+  binary::put(out, static_cast<std::uint64_t>(balance_matrix.rows()));
+  out.write(reinterpret_cast<const char*>(balance_matrix.data()),
+            static_cast<std::streamsize>(sizeof(double) * balance_matrix.size()));
+  binary::put_vector(out, balance_mpm_mass);
   out.write(tag, sizeof(tag));
   if (!out)
     throw std::runtime_error("hybrid checkpoint could not be written");
@@ -81,6 +94,25 @@ void HybridSolver::restore(std::istream& in)
   binary::get(in, last_zone_check);
   binary::get(in, n_cells_beyond_limit);
   binary::get_vector(in, zone_conversions);
+  std::uint64_t state_size = 0;
+  binary::get(in, state_size);
+  fe_state_at_window_start.resize(state_size);
+  in.read(fe_state_at_window_start.data(), static_cast<std::streamsize>(state_size));
+  binary::get_vector(in, fe_window_impulse);
+  binary::get_vector(in, interface_now);
+  binary::get(in, balance_window_length);
+  binary::get(in, balance_scale);
+  std::uint64_t rows = 0;
+  binary::get(in, rows);
+  if (!in || rows > 3 * keys.size())
+    throw std::runtime_error("hybrid checkpoint is inconsistent (balance matrix)");
+  balance_matrix.resize(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(rows));
+  in.read(reinterpret_cast<char*>(balance_matrix.data()),
+          static_cast<std::streamsize>(sizeof(double) * balance_matrix.size()));
+  std::vector<double> masses;
+  binary::get_vector(in, masses);
+  if (rows > 0 && masses.size() == keys.size())
+    factor_balance_matrix(masses);
   binary::expect_tag(in, tag, "hybrid checkpoint is incomplete (no trailer)");
 }
 } // namespace vulnus::coupling

@@ -203,35 +203,44 @@ void HybridSolver::predict_interface(const double dt, const mpm::SharedNodeState
   }
 }
 
-void HybridSolver::advance_fe(const double dt)
+std::vector<mpm::Vector3> HybridSolver::step_fe(const double dt)
 {
   targets.resize(fe_node_index.size());
   for (std::size_t i = 0; i < fe_node_index.size(); ++i)
     targets[i] = to_tensor(velocity_end[fe_node_index[i]]);
   fe_solver->set_interface_velocities(targets);
   fe_solver->advance(dt);
-  ++book.fe_steps;
 
   // The FE body received its interface nodes' momentum change minus the impulse it
-  // transmitted to them (its integrator's time integral), and the work of both.
-  const bool staggered = split.fe.staggered_velocity;
+  // transmitted to them (its integrator's time integral).
   std::vector<double> packed(3 * keys.size(), 0.0);
   const std::vector<dealii::Tensor<1, 3>>& transmitted = fe_solver->interface_impulses_of_last_step();
   for (std::size_t i = 0; i < transmitted.size(); ++i)
     for (unsigned int c = 0; c < 3; ++c)
       packed[3 * fe_node_index[i] + c] = transmitted[i][c];
   mpm_solver->rank_group().sum(packed.data(), static_cast<int>(packed.size()));
+  std::vector<mpm::Vector3> impulse(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    impulse[k] = fe_mass[k] * (velocity_end[k] - velocity_start[k]) -
+                 mpm::Vector3(packed[3 * k], packed[3 * k + 1], packed[3 * k + 2]);
+  return impulse;
+}
+
+void HybridSolver::book_fe_side(const std::vector<mpm::Vector3>& impulse)
+{
+  ++book.fe_steps;
+  const bool staggered = split.fe.staggered_velocity;
   for (std::size_t k = 0; k < keys.size(); ++k)
   {
-    const mpm::Vector3 impulse = fe_mass[k] * (velocity_end[k] - velocity_start[k]) -
-                                 mpm::Vector3(packed[3 * k], packed[3 * k + 1], packed[3 * k + 2]);
     const mpm::Vector3 v_step =
         staggered ? velocity_end[k] : mpm::Vector3(0.5 * (velocity_end[k] + velocity_start[k]));
-    book.fe_work += impulse.dot(v_step);
-    book.fe_impulse += impulse;
-    created[k] += impulse;
+    book.fe_work += impulse[k].dot(v_step);
+    book.fe_impulse += impulse[k];
+    created[k] += impulse[k];
   }
 }
+
+void HybridSolver::advance_fe(const double dt) { book_fe_side(step_fe(dt)); }
 
 void HybridSolver::start_window_correction()
 {
@@ -270,34 +279,39 @@ void HybridSolver::exchange(const double time, const double dt,
     advance_fe(dt);
     v_start = velocity_start;
     v_end = velocity_end;
+    book_mpm_side(dt, mpm_side, v_start, v_end);
+    return;
+  }
+  const double window = window_end - window_start;
+  const bool first_substep = time <= window_start + 1e-9 * window;
+  const bool last_substep = time + dt >= window_end - 1e-9 * window;
+  if (balances_windows())
+  {
+    exchange_balanced(time, dt, first_substep, last_substep, mpm_side, v_start, v_end);
+    return;
+  }
+  if (first_substep)
+  {
+    start_window_correction();
+    predict_interface(window, mpm_side);
+    advance_fe(window);
+  }
+  if (split.fe.staggered_velocity)
+  {
+    // Central difference: the interface moves with one velocity over the whole window.
+    v_start = first_substep ? velocity_start : velocity_end;
+    v_end = velocity_end;
   }
   else
   {
-    const double window = window_end - window_start;
-    const bool first_substep = time <= window_start + 1e-9 * window;
-    if (first_substep)
+    // End-of-step velocities, interpolated linearly over the window.
+    const double s0 = (time - window_start) / window;
+    const double s1 = std::min(1.0, (time + dt - window_start) / window);
+    for (std::size_t k = 0; k < keys.size(); ++k)
     {
-      start_window_correction();
-      predict_interface(window, mpm_side);
-      advance_fe(window);
-    }
-    if (split.fe.staggered_velocity)
-    {
-      // Central difference: the interface moves with one velocity over the whole window.
-      v_start = first_substep ? velocity_start : velocity_end;
-      v_end = velocity_end;
-    }
-    else
-    {
-      // Implicit: end-of-step velocities, interpolated linearly over the window.
-      const double s0 = (time - window_start) / window;
-      const double s1 = std::min(1.0, (time + dt - window_start) / window);
-      for (std::size_t k = 0; k < keys.size(); ++k)
-      {
-        const mpm::Vector3 jump = velocity_end[k] - velocity_start[k];
-        v_start[k] = velocity_start[k] + s0 * jump;
-        v_end[k] = velocity_start[k] + s1 * jump;
-      }
+      const mpm::Vector3 jump = velocity_end[k] - velocity_start[k];
+      v_start[k] = velocity_start[k] + s0 * jump;
+      v_end[k] = velocity_start[k] + s1 * jump;
     }
   }
   book_mpm_side(dt, mpm_side, v_start, v_end);

@@ -18,12 +18,18 @@
 // created, node by node, is taken back in the next window's prediction, so momentum is
 // exchanged exactly, one window late (the same-step scheme with the explicit far field
 // creates none).
+// Balanced windows (implicit far field, coupling/balanced_windows.cc): that lagged feedback
+// is unstable beyond short windows, so each window balances its own momentum: the substeps
+// steer the interface with the far field's effective interface mass over the window, and the
+// last substep closes the balance by re-stepping the far field from the window's start.
 #pragma once
 
 #include "coupling/decomposition.h"
 #include "coupling/interface_ledger.h"
 #include "fem/far_field_solver.h"
 #include "mpm/solver.h"
+
+#include <Eigen/Dense>
 
 #include <mpi.h>
 
@@ -33,6 +39,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace vulnus::coupling
@@ -95,6 +102,15 @@ public:
   bool at_window_end() const { return !window_open; }
   /// Kinetic + strain energy of the FE side, J.
   double fe_mechanical_energy() const;
+  /// Multi-step windows of an implicit far field.
+  bool has_implicit_windows() const;
+  /// Whether they balance their momentum within the window (coupling/balanced_windows.cc):
+  /// when the interface has at most max_balanced_interface_dofs dofs, since the far field's
+  /// effective interface mass takes one far-field solve per interface dof and is dense.
+  /// Otherwise the lagged correction takes the momentum back, stable only for windows below
+  /// about a quarter of a wave's transit of the interface cell.
+  bool balances_windows() const;
+  static constexpr std::size_t max_balanced_interface_dofs = 1500;
 
   // --- adaptive zone (coupling/adaptive_zone.cc) -----------------------------------------
   /// The zone now (it grows with the adaptive zone), m.
@@ -159,7 +175,38 @@ private:
   /// Shared-node velocity after a step dt: v + dt (f_mpm + f_fe) / (m_mpm + m_fe), with v the
   /// node's own (the FE interface) velocity.
   void predict_interface(double dt, const mpm::SharedNodeState& mpm_side);
+  /// Drives the far field's interface with velocity_end over dt and returns, by key, the
+  /// momentum its interface nodes received beyond what its body transmitted (not booked).
+  std::vector<mpm::Vector3> step_fe(double dt);
+  /// Books an FE step's interface impulses in the ledger and the window's created momentum.
+  void book_fe_side(const std::vector<mpm::Vector3>& impulse);
   void advance_fe(double dt);
+  /// exchange() for balanced windows: the far field steps at the window's start with the
+  /// predicted end velocities; every substep moves the interface towards the end velocities
+  /// that would balance the window's momentum with the substep's MPM force held; the last
+  /// substep balances it (balance_window) and books the far field's final step.
+  void exchange_balanced(double time, double dt, bool first_substep, bool last_substep,
+                         const mpm::SharedNodeState& mpm_side,
+                         std::vector<mpm::Vector3>& v_start, std::vector<mpm::Vector3>& v_end);
+  /// Last substep of a balanced window: finds the interface end velocities for which the
+  /// window creates no momentum, each guess evaluated by the far field's step from the
+  /// window's start; the MPM side's last substep goes from v_start to them.
+  void balance_window(double window, double dt, const mpm::SharedNodeState& mpm_side,
+                      const std::vector<mpm::Vector3>& v_start);
+  /// The far field's effective interface mass over a window (its Newton matrix's Schur
+  /// complement on the interface, one far-field solve per interface dof) into balance_matrix.
+  void build_balance_matrix(double window);
+  /// The balance's chord matrix for this window: balance_matrix plus the MPM nodal masses,
+  /// identity rows for components a support holds.
+  void factor_balance_matrix(const std::vector<double>& mpm_mass);
+  /// 1 for every free component of each interface node, 0 where a grid-face support holds it.
+  std::vector<mpm::Vector3> held_components() const;
+  /// Into g (3 per key): the momentum a balanced window creates at each shared node if its end
+  /// velocity is velocity_end and this substep's MPM force holds for `remaining` seconds;
+  /// returns its largest component, kg m/s.
+  double creation_residual(const mpm::SharedNodeState& mpm_side,
+                           const std::vector<mpm::Vector3>& v_start, double remaining,
+                           Eigen::VectorXd& g) const;
   /// Starts a window: the momentum the last one created becomes the correction.
   void start_window_correction();
   void book_mpm_side(double dt, const mpm::SharedNodeState& mpm_side,
@@ -185,6 +232,20 @@ private:
   std::vector<mpm::Vector3> created;    ///< momentum the current window created, by key
   std::vector<mpm::Vector3> correction; ///< impulse applied in the current window, by key
   std::vector<dealii::Tensor<1, 3>> targets;
+  // Balanced windows (implicit far field).
+  std::string fe_state_at_window_start;
+  std::vector<mpm::Vector3> fe_window_impulse;  ///< of the far field's step, not yet booked
+  std::vector<mpm::Vector3> interface_now; ///< shared nodes' velocity after the last substep
+  Eigen::MatrixXd balance_matrix; ///< the far field's effective interface mass, 3 per key, kg
+  Eigen::PartialPivLU<Eigen::MatrixXd> balance_solver;
+  std::vector<double> balance_mpm_mass; ///< the MPM masses balance_solver was factored with
+  double balance_window_length = 0.0; ///< s
+  double balance_scale = 0.0; ///< largest (m_fe + m_mpm) |v| of an interface node so far, kg m/s
+  /// The far field's Newton solves to about 1e-8 of its force scale, so its transmitted
+  /// impulse, and the balance, are not exact below about this; what is left is taken back in
+  /// the next window (the momentum correction).
+  static constexpr double balance_tolerance = 1e-9;
+  static constexpr unsigned int max_balance_iterations = 8;
 
   MPI_Comm comm;
   std::function<void(fem::FarFieldSolver&)> prepare_far_field;

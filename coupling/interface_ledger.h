@@ -22,6 +22,15 @@ struct InterfaceLedger
   Eigen::Vector3d mpm_impulse = Eigen::Vector3d::Zero();
   Eigen::Vector3d fe_impulse = Eigen::Vector3d::Zero();
   unsigned long fe_steps = 0;
+  /// Balanced windows (implicit far field): far-field steps repeated to close the windows'
+  /// momentum balance; windows whose balance stopped above its tolerance (what is left is
+  /// taken back in the next window) and the largest residual left, relative to the
+  /// interface's momentum scale; the effective-mass matrices built and their wall time.
+  unsigned long balance_solves = 0;
+  unsigned long balance_unconverged_windows = 0;
+  double largest_balance_residual = 0.0;
+  unsigned long balance_matrices = 0;
+  double balance_matrix_seconds = 0.0;
   unsigned long mpm_steps = 0;
 
   /// Work done by MPM minus work received by FE (the interface energy error), J.

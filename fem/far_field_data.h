@@ -62,6 +62,8 @@ struct EvaluationSums
 /// Matrix, preconditioner and work vectors of the implicit integrators
 /// (fem/implicit_integrator.cc).
 struct ImplicitData;
+/// The implicit step's interface stiffness (fem/interface_stiffness.cc).
+struct InterfaceStiffnessData;
 
 struct FarFieldSolver::Data
 {
@@ -154,6 +156,7 @@ struct FarFieldSolver::Data
   ImplicitStepStatistics implicit_statistics;
   std::shared_ptr<ImplicitData>
       implicit; ///< matrix and preconditioner (shared_ptr: incomplete type)
+  std::shared_ptr<InterfaceStiffnessData> interface_stiffness;
 
   /// Adaptive zone: cells whose material became points (by active cell index, every cell
   /// of the mesh, artificial ones included, decided by its centre; empty before the first
@@ -213,6 +216,10 @@ struct FarFieldSolver::Data
 /// The Newmark velocity weight gamma of the configured integrator (1/2 for the explicit and the
 /// average-acceleration steps).
 double integrator_gamma(const FeSceneParameters& prm);
+/// The implicit integrator's beta, alpha_m and alpha_f (Newmark: 1/4, 0, 0).
+double implicit_beta(const FeSceneParameters& prm);
+double implicit_alpha_m(const FeSceneParameters& prm);
+double implicit_alpha_f(const FeSceneParameters& prm);
 
 /// The failure proximity of one point (FeSceneParameters::track_failure_proximity): the larger
 /// of the matrix shear's upper bound over its limit and, with a fiber, (fiber stretch - 1) /

@@ -195,6 +195,20 @@ public:
   /// velocity_driven: velocities of the interface nodes at the end of the next step.
   void set_interface_velocities(const std::vector<dealii::Tensor<1, 3>>& velocities);
 
+  // --- interface stiffness of an implicit step (fem/interface_stiffness.cc) --------------
+  /// Collective: assembles the implicit step's Newton matrix for a step of dt at the current
+  /// state, the interface and supports held, for interface_stiffness_column.
+  void prepare_interface_stiffness(double dt);
+  /// Collective: the forces this rank's interface nodes need (interface_nodes() order), N,
+  /// when the interface dof `dof` moves by 1 m at the step's end, the other interface dofs
+  /// held and the rest of the body free: a column of the Newton matrix's Schur complement on
+  /// the interface. Times interface_mass_factor(dt) it is the effective mass, kg, with which
+  /// the body resists a change of the interface velocity at the step's end.
+  std::vector<dealii::Tensor<1, 3>> interface_stiffness_column(dealii::types::global_dof_index dof) const;
+  void release_interface_stiffness();
+  /// beta dt^2 / (1 - alpha_f), s^2.
+  double interface_mass_factor(double dt) const;
+
   // --- adaptive zone (fem/far_field_conversion.cc) ---------------------------------------
   /// Collective: the reference centres of the cells (every rank's, on every rank) where a
   /// quadrature point, at the last force evaluation, had failed or reached `threshold` of the

@@ -4,6 +4,7 @@
 //   residual  r(u) = f_ext(t_{n+1-af}) - f_int(u_{n+1-af}) - M a_{n+1-am}   (consistent M)
 //   tangent   -dr/du = (1 - af) K_t + (1 - am) / (beta dt^2) M
 #include "fem/far_field_data.h"
+#include "fem/point_tangent.h"
 #include "fem/tensor_conversion.h"
 
 #include <deal.II/base/mpi.h>
@@ -60,6 +61,9 @@ AlphaCoefficients coefficients(const FeSceneParameters& prm)
 } // namespace
 
 double integrator_gamma(const FeSceneParameters& prm) { return coefficients(prm).gamma; }
+double implicit_beta(const FeSceneParameters& prm) { return coefficients(prm).beta; }
+double implicit_alpha_m(const FeSceneParameters& prm) { return coefficients(prm).alpha_m; }
+double implicit_alpha_f(const FeSceneParameters& prm) { return coefficients(prm).alpha_f; }
 
 namespace
 {
@@ -167,25 +171,9 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
         f_values[i] += f_int;
         inertia_values[i] += rho_JxW * values[i] * a_q[ci];
         cell_rhs(i) -= f_int + rho_JxW * values[i] * a_q[ci];
-        // t_iL = sum_J g_i[J] dP_{ci J}/dF_{cj L}, then K_ij = t_i(cj, :) . g_j.
-        double t_i[3][3];
-        for (unsigned int cj = 0; cj < 3; ++cj)
-          for (unsigned int L = 0; L < 3; ++L)
-          {
-            double s = 0.0;
-            for (unsigned int Jj = 0; Jj < 3; ++Jj)
-              s += grads[i][Jj] * tangent(3 * ci + Jj, 3 * cj + L);
-            t_i[cj][L] = s;
-          }
-        for (unsigned int j = 0; j < n_dofs; ++j)
-        {
-          const unsigned int cj = component[j];
-          double kij =
-              t_i[cj][0] * grads[j][0] + t_i[cj][1] * grads[j][1] + t_i[cj][2] * grads[j][2];
-          cell_matrix(i, j) += stiffness_factor * kij * JxW +
-                               (ci == cj ? mass_factor * rho_JxW * values[i] * values[j] : 0.0);
-        }
       }
+      add_point_tangent(tangent, grads, values, component, JxW, d.prm.density, stiffness_factor,
+                        mass_factor, cell_matrix);
       sums.strain_energy += response.energy_density * JxW;
       sums.dissipated += response.dissipated_density * JxW;
       stress_sum += JxW * sigma;

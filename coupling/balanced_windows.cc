@@ -1,0 +1,207 @@
+// Balanced multi-step windows for an implicit far field (docs/far_field.md, section 1): the
+// far field steps once per window, driven by the interface's end velocities; the MPM substeps
+// move the interface towards the end velocities that would balance the window's momentum, and
+// the last substep balances it exactly, re-stepping the far field from the window's start.
+#include "coupling/hybrid_solver.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace vulnus::coupling
+{
+bool HybridSolver::has_implicit_windows() const
+{
+  return split.hybrid.scheme == CouplingScheme::multi_step &&
+         (split.fe.integrator == fem::TimeIntegrator::newmark ||
+          split.fe.integrator == fem::TimeIntegrator::generalized_alpha);
+}
+
+bool HybridSolver::balances_windows() const
+{
+  return has_implicit_windows() && 3 * keys.size() <= max_balanced_interface_dofs;
+}
+
+void HybridSolver::exchange_balanced(const double time, const double dt, const bool first_substep,
+                                     const bool last_substep, const mpm::SharedNodeState& mpm_side,
+                                     std::vector<mpm::Vector3>& v_start,
+                                     std::vector<mpm::Vector3>& v_end)
+{
+  const double window = window_end - window_start;
+  const std::size_t n = keys.size();
+  if (first_substep)
+  {
+    start_window_correction();
+    predict_interface(window, mpm_side);
+    std::ostringstream state;
+    fe_solver->save(state);
+    fe_state_at_window_start = state.str();
+    fe_window_impulse = step_fe(window);
+    interface_now = velocity_start;
+    if (static_cast<std::size_t>(balance_matrix.rows()) != 3 * n ||
+        std::abs(window - balance_window_length) > 0.25 * window)
+      build_balance_matrix(window);
+    factor_balance_matrix(mpm_side.mass);
+  }
+  v_start = interface_now;
+  if (last_substep)
+  {
+    balance_window(window, dt, mpm_side, v_start);
+    v_end = velocity_end;
+    book_fe_side(fe_window_impulse);
+    fe_state_at_window_start.clear();
+  }
+  else
+  {
+    // The end velocities that would balance the window if this substep's MPM force held to
+    // its end (one chord step from the far field's step), and this substep's share of the way
+    // to them along the window.
+    Eigen::VectorXd g;
+    creation_residual(mpm_side, v_start, window_end - time, g);
+    const Eigen::VectorXd dv = balance_solver.solve(g);
+    const std::vector<mpm::Vector3> free = held_components();
+    const double s1 = (time + dt - window_start) / window;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const mpm::Vector3 estimate = velocity_end[k] - dv.segment<3>(3 * k).cwiseProduct(free[k]);
+      v_end[k] = velocity_start[k] + s1 * (estimate - velocity_start[k]);
+    }
+  }
+  interface_now = v_end;
+  book_mpm_side(dt, mpm_side, v_start, v_end);
+}
+
+double HybridSolver::creation_residual(const mpm::SharedNodeState& mpm_side,
+                                       const std::vector<mpm::Vector3>& v_start,
+                                       const double remaining, Eigen::VectorXd& g) const
+{
+  // Momentum the window creates at each shared node if its end velocity is velocity_end and
+  // this substep's MPM force holds for the time remaining: the far field's share (from its
+  // step driven by velocity_end), the MPM substeps' so far (created), the MPM side's from now
+  // to the end, less the correction the window is to apply. Components a support holds are
+  // left out.
+  const std::vector<mpm::Vector3> free = held_components();
+  g.resize(3 * keys.size());
+  double largest = 0.0;
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    const mpm::Vector3 gk =
+        (fe_window_impulse[k] + created[k] - correction[k] +
+         mpm_side.mass[k] * (velocity_end[k] - v_start[k]) - remaining * mpm_side.force[k])
+            .cwiseProduct(free[k]);
+    g.segment<3>(3 * k) = gk;
+    largest = std::max(largest, gk.cwiseAbs().maxCoeff());
+  }
+  return largest;
+}
+
+std::vector<mpm::Vector3> HybridSolver::held_components() const
+{
+  const mpm::Grid& grid = mpm_solver->background_grid();
+  std::vector<mpm::Vector3> free(keys.size(), mpm::Vector3::Ones());
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    mpm::apply_face_conditions(grid, split.mpm.domain_faces, keys[k], free[k]);
+  return free;
+}
+
+void HybridSolver::build_balance_matrix(const double window)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t n = 3 * keys.size();
+  std::vector<double> dofs(n, 0.0);
+  const std::vector<fem::NodeRecord>& nodes = fe_solver->interface_nodes();
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    for (unsigned int c = 0; c < 3; ++c)
+      dofs[3 * fe_node_index[i] + c] = static_cast<double>(nodes[i].dofs[c]);
+  mpm_solver->rank_group().sum(dofs.data(), static_cast<int>(n));
+  const std::vector<mpm::Vector3> free = held_components();
+  const double factor = fe_solver->interface_mass_factor(window);
+
+  fe_solver->prepare_interface_stiffness(window);
+  balance_matrix = Eigen::MatrixXd::Zero(n, n);
+  std::vector<double> column(n);
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    if (free[j / 3][j % 3] == 0.0)
+      continue;
+    const std::vector<dealii::Tensor<1, 3>> forces = fe_solver->interface_stiffness_column(
+        static_cast<dealii::types::global_dof_index>(dofs[j]));
+    std::fill(column.begin(), column.end(), 0.0);
+    for (std::size_t i = 0; i < forces.size(); ++i)
+      for (unsigned int c = 0; c < 3; ++c)
+        column[3 * fe_node_index[i] + c] = factor * forces[i][c];
+    mpm_solver->rank_group().sum(column.data(), static_cast<int>(n));
+    for (std::size_t i = 0; i < n; ++i)
+      balance_matrix(i, j) = column[i];
+  }
+  fe_solver->release_interface_stiffness();
+  balance_window_length = window;
+  ++book.balance_matrices;
+  book.balance_matrix_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void HybridSolver::factor_balance_matrix(const std::vector<double>& mpm_mass)
+{
+  const std::vector<mpm::Vector3> free = held_components();
+  Eigen::MatrixXd a = balance_matrix;
+  for (Eigen::Index i = 0; i < a.rows(); ++i)
+  {
+    if (free[i / 3][i % 3] == 0.0)
+    {
+      a.row(i).setZero();
+      a.col(i).setZero();
+      a(i, i) = 1.0;
+    }
+    else
+      a(i, i) += mpm_mass[i / 3];
+  }
+  balance_solver.compute(a);
+  balance_mpm_mass = mpm_mass;
+}
+
+void HybridSolver::balance_window(const double window, const double dt,
+                                  const mpm::SharedNodeState& mpm_side,
+                                  const std::vector<mpm::Vector3>& v_start)
+{
+  // Newton's chord iteration on the momentum the window creates (creation_residual with the
+  // last substep's dt): the matrix is the MPM masses plus the far field's effective interface
+  // mass over the window, each guess is evaluated by the far field's step from the window's
+  // start.
+  const std::size_t n = keys.size();
+  const std::vector<mpm::Vector3> free = held_components();
+  double scale = 0.0, largest_mass = 0.0;
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const double mass = fe_mass[k] + mpm_side.mass[k];
+    scale = std::max(scale, mass * std::max(velocity_end[k].norm(), velocity_start[k].norm()));
+    largest_mass = std::max(largest_mass, mass);
+  }
+  // Relative to the largest momentum the interface has carried (tiny waves ahead of a pulse
+  // need no finer balance), and no finer than the velocities the far field's Newton resolves
+  // (it stops at corrections of 1e-12 of a cell): 1e-10 of a cell per window.
+  balance_scale = std::max(balance_scale, scale);
+  const double tolerance =
+      std::max(balance_tolerance * balance_scale,
+               1e-10 * largest_mass * split.fe.interface_cell_size / window);
+  Eigen::VectorXd g;
+  double largest = creation_residual(mpm_side, v_start, dt, g);
+  unsigned int iteration = 0;
+  for (; largest > tolerance && iteration < max_balance_iterations; ++iteration)
+  {
+    const Eigen::VectorXd dv = balance_solver.solve(g);
+    for (std::size_t k = 0; k < n; ++k)
+      velocity_end[k] -= dv.segment<3>(3 * k).cwiseProduct(free[k]);
+    std::istringstream state(fe_state_at_window_start);
+    fe_solver->restore(state);
+    fe_window_impulse = step_fe(window);
+    largest = creation_residual(mpm_side, v_start, dt, g);
+  }
+  book.balance_solves += iteration;
+  if (largest > tolerance)
+  {
+    ++book.balance_unconverged_windows;
+    book.largest_balance_residual = std::max(book.largest_balance_residual, largest / balance_scale);
+  }
+}
+} // namespace vulnus::coupling

@@ -1,0 +1,207 @@
+// The implicit step's interface stiffness: the Schur complement of the Newton matrix on the
+// interface dofs, column by column. A unit displacement of one interface dof (the others held,
+// the rest of the body free) is answered by the forces the interface nodes need; the hybrid
+// coupling builds from it the window's effective interface mass (docs/far_field.md, section 1).
+#include "fem/far_field_data.h"
+#include "fem/point_tangent.h"
+#include "fem/tensor_conversion.h"
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <stdexcept>
+
+namespace vulnus::fem
+{
+using namespace dealii;
+
+struct InterfaceStiffnessData
+{
+  TrilinosWrappers::SparseMatrix matrix; ///< Newton matrix, interface and supports held
+  TrilinosWrappers::PreconditionAMG preconditioner;
+  /// Cells holding an interface dof: their dofs and full (unconstrained) cell matrices.
+  std::vector<std::vector<types::global_dof_index>> cell_dofs;
+  std::vector<FullMatrix<double>> cell_matrices;
+};
+
+namespace
+{
+/// Flags (ghosted, 1.0) the interface dofs every rank's cells can see.
+FarFieldSolver::Data::Vector interface_dof_flags(const FarFieldSolver::Data& d)
+{
+  FarFieldSolver::Data::Vector owned(d.owned_dofs, d.comm);
+  for (const DirichletDof& dirichlet : d.dirichlet_dofs)
+    if (dirichlet.source == DirichletSource::interface)
+      owned(dirichlet.dof) = 1.0;
+  owned.compress(VectorOperation::insert);
+  FarFieldSolver::Data::Vector ghosted(d.owned_dofs, d.relevant_dofs, d.comm);
+  ghosted = owned;
+  return ghosted;
+}
+} // namespace
+
+void FarFieldSolver::prepare_interface_stiffness(const double dt)
+{
+  Data& d = *data;
+  if (!d.is_implicit())
+    throw std::logic_error("interface stiffness: the far field is not implicit");
+  const double beta = implicit_beta(d.prm), alpha_m = implicit_alpha_m(d.prm),
+               alpha_f = implicit_alpha_f(d.prm);
+  const double mass_factor = (1.0 - alpha_m) / (beta * dt * dt);
+  const double stiffness_factor = 1.0 - alpha_f;
+
+  auto s = std::make_shared<InterfaceStiffnessData>();
+  TrilinosWrappers::SparsityPattern sparsity(d.owned_dofs, d.owned_dofs, d.relevant_dofs, d.comm);
+  DoFTools::make_sparsity_pattern(d.dof_handler, sparsity, d.increment_constraints, false,
+                                  Utilities::MPI::this_mpi_process(d.comm));
+  sparsity.compress();
+  s->matrix.reinit(sparsity);
+
+  const Data::Vector on_interface = interface_dof_flags(d);
+  d.ghosted = d.displacement;
+  FEValues<3> fe_values(d.mapping, d.fe, d.quadrature,
+                        update_values | update_gradients | update_JxW_values);
+  const unsigned int n_dofs = d.fe.n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(n_dofs);
+  std::vector<unsigned int> component(n_dofs);
+  for (unsigned int i = 0; i < n_dofs; ++i)
+    component[i] = d.fe.system_to_component_index(i).first;
+  std::vector<Tensor<1, 3>> grads(n_dofs);
+  std::vector<double> values(n_dofs), u_local(n_dofs);
+  FullMatrix<double> cell_matrix(n_dofs, n_dofs);
+  materials::PointResponse response;
+  for (const auto& cell : d.dof_handler.active_cell_iterators())
+  {
+    if (!d.owns_live(cell))
+      continue;
+    fe_values.reinit(cell);
+    cell->get_dof_indices(dofs);
+    bool touches_interface = false;
+    for (unsigned int i = 0; i < n_dofs; ++i)
+    {
+      u_local[i] = d.ghosted(dofs[i]);
+      touches_interface = touches_interface || on_interface(dofs[i]) != 0.0;
+    }
+    const std::size_t first = std::size_t(cell->active_cell_index()) * d.n_q_points;
+    cell_matrix = 0.0;
+    for (unsigned int q = 0; q < d.n_q_points; ++q)
+    {
+      Tensor<2, 3> F = unit_symmetric_tensor<3>();
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        grads[i] = fe_values.shape_grad_component(i, q, component[i]);
+        values[i] = fe_values.shape_value_component(i, q, component[i]);
+        F[component[i]] += u_local[i] * grads[i];
+      }
+      materials::PointState state = d.committed_states[first + q];
+      const Eigen::Matrix3d F_eigen = to_eigen(F);
+      d.material->update(F_eigen, d.fiber_directions[first + q], state, response);
+      const materials::Tangent tangent =
+          d.material->tangent(F_eigen, d.fiber_directions[first + q], state);
+      add_point_tangent(tangent, grads, values, component, fe_values.JxW(q), d.prm.density,
+                        stiffness_factor, mass_factor, cell_matrix);
+    }
+    if (touches_interface)
+    {
+      s->cell_dofs.push_back(dofs);
+      s->cell_matrices.push_back(cell_matrix);
+    }
+    d.increment_constraints.distribute_local_to_global(cell_matrix, dofs, s->matrix);
+  }
+  for (const auto dof : d.dead_dofs)
+    s->matrix.add(dof, dof, mass_factor * d.dead_dof_mass);
+  s->matrix.compress(VectorOperation::add);
+
+  TrilinosWrappers::PreconditionAMG::AdditionalData amg;
+  amg.elliptic = true;
+  amg.higher_order_elements = d.prm.degree > 1;
+  amg.smoother_sweeps = 2;
+  amg.aggregation_threshold = 0.02;
+  std::vector<std::vector<bool>> constant_modes;
+  DoFTools::extract_constant_modes(d.dof_handler, ComponentMask(), constant_modes);
+  amg.constant_modes = constant_modes;
+  s->preconditioner.initialize(s->matrix, amg);
+  d.interface_stiffness = s;
+}
+
+std::vector<Tensor<1, 3>>
+FarFieldSolver::interface_stiffness_column(const types::global_dof_index dof) const
+{
+  Data& d = *data;
+  if (!d.interface_stiffness)
+    throw std::logic_error("interface stiffness: prepare_interface_stiffness was not called");
+  const InterfaceStiffnessData& s = *d.interface_stiffness;
+  // The unit displacement of `dof` (held), the rest of the body's answer, and the forces on
+  // the interface rows.
+  Data::Vector unit(d.owned_dofs, d.comm);
+  if (d.owned_dofs.is_element(dof))
+    unit(dof) = 1.0;
+  unit.compress(VectorOperation::insert);
+  Data::Vector unit_ghosted(d.owned_dofs, d.relevant_dofs, d.comm);
+  unit_ghosted = unit;
+
+  const unsigned int n_dofs = d.fe.n_dofs_per_cell();
+  Vector<double> local(n_dofs), product(n_dofs);
+  Data::Vector rhs(d.owned_dofs, d.comm);
+  for (std::size_t c = 0; c < s.cell_dofs.size(); ++c)
+  {
+    bool holds = false;
+    for (unsigned int i = 0; i < n_dofs; ++i)
+    {
+      local(i) = unit_ghosted(s.cell_dofs[c][i]);
+      holds = holds || local(i) != 0.0;
+    }
+    if (!holds)
+      continue;
+    s.cell_matrices[c].vmult(product, local);
+    product *= -1.0;
+    d.increment_constraints.distribute_local_to_global(product, s.cell_dofs[c], rhs);
+  }
+  rhs.compress(VectorOperation::add);
+
+  Data::Vector answer(d.owned_dofs, d.comm);
+  const double norm = rhs.l2_norm();
+  if (norm > 0.0)
+  {
+    SolverControl control(d.prm.max_linear_iterations, 1e-12 * norm);
+    TrilinosWrappers::SolverCG solver(control);
+    solver.solve(s.matrix, answer, rhs, s.preconditioner);
+  }
+  d.increment_constraints.distribute(answer);
+  answer += unit;
+  Data::Vector answer_ghosted(d.owned_dofs, d.relevant_dofs, d.comm);
+  answer_ghosted = answer;
+
+  Data::Vector forces(d.owned_dofs, d.comm);
+  std::vector<double> add(n_dofs);
+  for (std::size_t c = 0; c < s.cell_dofs.size(); ++c)
+  {
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      local(i) = answer_ghosted(s.cell_dofs[c][i]);
+    s.cell_matrices[c].vmult(product, local);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      add[i] = product(i);
+    forces.add(s.cell_dofs[c], add);
+  }
+  forces.compress(VectorOperation::add);
+  std::vector<Tensor<1, 3>> column(d.interface_nodes.size());
+  for (std::size_t n = 0; n < d.interface_nodes.size(); ++n)
+    for (unsigned int c = 0; c < 3; ++c)
+      column[n][c] = forces(d.interface_nodes[n].dofs[c]);
+  return column;
+}
+
+void FarFieldSolver::release_interface_stiffness() { data->interface_stiffness.reset(); }
+
+double FarFieldSolver::interface_mass_factor(const double dt) const
+{
+  return implicit_beta(data->prm) * dt * dt / (1.0 - implicit_alpha_f(data->prm));
+}
+} // namespace vulnus::fem
