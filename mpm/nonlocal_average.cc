@@ -64,54 +64,73 @@ std::array<int, 3> NonlocalNeighbourhood::cell_coordinates(const Vector3f& x) co
   return c;
 }
 
-template <int n_fields>
-std::array<double, n_fields>
-NonlocalNeighbourhood::weighted_means(const std::size_t p,
-                                      const std::array<const double*, n_fields>& values,
-                                      const char* include) const
+std::vector<NonlocalNeighbour> NonlocalNeighbourhood::neighbours(const std::size_t p) const
 {
+  std::vector<NonlocalNeighbour> list;
   const Vector3f& x = points.reference_position[p];
   const std::array<int, 3> c = cell_coordinates(x);
   const double inverse_radius_squared = 1.0 / (radius * radius);
-  std::array<double, n_fields> weighted{};
-  double weights = 0.0;
   auto low = [&](const int d) { return std::max(c[d] - reach, 0); };
   auto high = [&](const int d) { return std::min(c[d] + reach, static_cast<int>(n[d]) - 1); };
   for (int k = low(2); k <= high(2); ++k)
     for (int j = low(1); j <= high(1); ++j)
     {
-      // The cells of one row are contiguous, and so are their points.
       const std::size_t row_begin = cell_start[cell_index({low(0), j, k})];
       const std::size_t row_end = cell_start[cell_index({high(0), j, k}) + 1];
       for (std::size_t s = row_begin; s < row_end; ++s)
       {
-        if (!include[s])
-          continue;
         const double r2 = (position[s] - x).squaredNorm() * inverse_radius_squared;
-        if (r2 >= 1.0)
-          continue;
-        const double w = (1.0 - r2) * (1.0 - r2) * volume[s];
-        for (int f = 0; f < n_fields; ++f)
-          weighted[f] += w * values[f][s];
-        weights += w;
+        if (r2 < 1.0)
+          list.push_back({static_cast<std::uint32_t>(s),
+                          static_cast<float>((1.0 - r2) * (1.0 - r2) * volume[s])});
       }
     }
-  for (int f = 0; f < n_fields; ++f)
-    weighted[f] = weights > 0.0 ? weighted[f] / weights : 0.0;
-  return weighted;
+  return list;
+}
+
+std::array<double, 2> NonlocalNeighbourhood::list_means(const std::vector<NonlocalNeighbour>& list,
+                                                        const double* first_values,
+                                                        const double* second_values,
+                                                        const char* include)
+{
+  double first = 0.0, second = 0.0, weights = 0.0;
+  for (const NonlocalNeighbour& q : list)
+    if (include[q.sorted])
+    {
+      const double w = q.weight;
+      first += w * first_values[q.sorted];
+      second += w * second_values[q.sorted];
+      weights += w;
+    }
+  return weights > 0.0 ? std::array<double, 2>{first / weights, second / weights}
+                       : std::array<double, 2>{0.0, 0.0};
+}
+
+double NonlocalNeighbourhood::list_mean(const std::vector<NonlocalNeighbour>& list,
+                                        const double* values, const char* include)
+{
+  double sum = 0.0, weights = 0.0;
+  for (const NonlocalNeighbour& q : list)
+    if (include[q.sorted])
+    {
+      const double w = q.weight;
+      sum += w * values[q.sorted];
+      weights += w;
+    }
+  return weights > 0.0 ? sum / weights : 0.0;
 }
 
 double NonlocalNeighbourhood::mean(const std::size_t p, const double* values,
                                    const char* include) const
 {
-  return weighted_means<1>(p, {values}, include)[0];
+  return list_mean(neighbours(p), values, include);
 }
 
 std::array<double, 2> NonlocalNeighbourhood::means(const std::size_t p, const double* first_values,
                                                    const double* second_values,
                                                    const char* include) const
 {
-  return weighted_means<2>(p, {first_values, second_values}, include);
+  return list_means(neighbours(p), first_values, second_values, include);
 }
 
 std::vector<char> NonlocalNeighbourhood::grown_by_the_radius(const std::vector<char>& flags) const

@@ -8,10 +8,19 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace vulnus::mpm
 {
+/// A point within the radius of another and its weight (bell function times reference
+/// volume, in single precision like the volumes), by its position in cell order.
+struct NonlocalNeighbour
+{
+  std::uint32_t sorted = 0;
+  float weight = 0.0f;
+};
+
 class NonlocalNeighbourhood
 {
 public:
@@ -26,12 +35,23 @@ public:
   /// The means of two fields in one pass.
   std::array<double, 2> means(std::size_t p, const double* first_values,
                               const double* second_values, const char* include) const;
+  /// The binned points within the radius of point p with their weights, row by row of the
+  /// cells around it; mean() and means() are list_mean() and list_means() over it.
+  std::vector<NonlocalNeighbour> neighbours(std::size_t p) const;
+  /// means() over a list from neighbours().
+  static std::array<double, 2> list_means(const std::vector<NonlocalNeighbour>& list,
+                                          const double* first_values,
+                                          const double* second_values, const char* include);
+  static double list_mean(const std::vector<NonlocalNeighbour>& list, const double* values,
+                          const char* include);
   /// A field given per binned point (index q - begin) rearranged into cell order.
   template <class T>
   std::vector<T> in_cell_order(const T* values) const
   {
     std::vector<T> sorted(order.size());
-    for (std::size_t s = 0; s < order.size(); ++s)
+    const long n_sorted = static_cast<long>(order.size());
+#pragma omp parallel for schedule(static)
+    for (long s = 0; s < n_sorted; ++s)
       sorted[s] = values[order[s] - first];
     return sorted;
   }
@@ -45,10 +65,6 @@ public:
 
 private:
   static constexpr int reach = 2; ///< cells per radius
-  template <int n_fields>
-  std::array<double, n_fields> weighted_means(std::size_t p,
-                                              const std::array<const double*, n_fields>& values,
-                                              const char* include) const;
   std::array<int, 3> cell_coordinates(const Vector3f& x) const;
   std::size_t cell_index(const std::array<int, 3>& c) const
   {

@@ -1,11 +1,13 @@
 // Hot cells (a point past a limit by the cheap bound), candidates within the radius of them,
-// exact measures within the radius of those, then the means at the candidates.
+// exact measures within the radius of those, then the means at the candidates over their
+// neighbour lists (made once a point first needs a mean, kept while the points stay put).
 #include "mpm/nonlocal_failure.h"
 
 #include "materials/material_parameters.h"
 #include "materials/two_surface_failure.h"
 #include "mpm/nonlocal_average.h"
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 
@@ -19,13 +21,33 @@ const materials::FailureParameters* regularized_criterion(const materials::Mater
   return c && c->regularization_length > 0.0 ? c : nullptr;
 }
 
+/// The body's cached binning and lists, rebuilt when its points changed.
+const NonlocalNeighbourhood& neighbourhood_of(NonlocalFailureCache::Body& cached,
+                                              const Particles& points, const std::size_t begin,
+                                              const std::size_t end, const double radius)
+{
+  const std::size_t n = end - begin;
+  const bool same = cached.neighbourhood && cached.ids.size() == n &&
+                    std::equal(cached.ids.begin(), cached.ids.end(), points.id.begin() + begin);
+  if (!same)
+  {
+    cached.ids.assign(points.id.begin() + begin, points.id.begin() + end);
+    cached.neighbourhood = std::make_unique<NonlocalNeighbourhood>(points, begin, end, radius);
+    cached.lists.assign(n, {});
+    cached.listed.assign(n, 0);
+  }
+  return *cached.neighbourhood;
+}
+
 void decide_for_body(const materials::FailureParameters& c, const bool fibers,
-                     Particles& points, const std::size_t begin, const std::size_t end)
+                     Particles& points, const std::size_t begin, const std::size_t end,
+                     NonlocalFailureCache::Body& cached)
 {
   const long n = static_cast<long>(end - begin);
   if (n == 0)
     return;
-  const NonlocalNeighbourhood neighbourhood(points, begin, end, c.regularization_length);
+  const NonlocalNeighbourhood& neighbourhood =
+      neighbourhood_of(cached, points, begin, end, c.regularization_length);
   std::vector<double> shear(n), stretch(n, 0.0);
   std::vector<char> counted(n);
 #pragma omp parallel for schedule(static)
@@ -39,12 +61,29 @@ void decide_for_body(const materials::FailureParameters& c, const bool fibers,
       stretch[i] = (F * points.fiber_direction[p].cast<double>().normalized()).norm();
   }
   std::vector<char> hot(neighbourhood.n_cells(), 0);
+#pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i)
     if (counted[i] && (shear[i] > c.matrix_shear_limit ||
                        (fibers && stretch[i] > c.fiber_stretch_limit)))
+    {
+#pragma omp atomic write
       hot[neighbourhood.cell_of(begin + i)] = 1;
+    }
   const std::vector<char> candidate = neighbourhood.grown_by_the_radius(hot);
-  const std::vector<char> measured = neighbourhood.grown_by_the_radius(candidate);
+  // Exact shear measures are needed only around the candidates whose matrix can still fail
+  // (a point with failed matrix and intact fibers needs the stretch mean alone).
+  std::vector<char> shear_mean_needed(neighbourhood.n_cells(), 0);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+  {
+    const std::size_t cell = neighbourhood.cell_of(begin + i);
+    if (counted[i] && candidate[cell] && !(points.failure[begin + i] & materials::matrix_failed))
+    {
+#pragma omp atomic write
+      shear_mean_needed[cell] = 1;
+    }
+  }
+  const std::vector<char> measured = neighbourhood.grown_by_the_radius(shear_mean_needed);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i)
     if (measured[neighbourhood.cell_of(begin + i)])
@@ -62,22 +101,28 @@ void decide_for_body(const materials::FailureParameters& c, const bool fibers,
     {
       const bool matrix = !(byte & materials::matrix_failed);
       const bool fiber = fibers && !(byte & materials::fiber_failed);
+      if ((matrix || fiber) && !cached.listed[i])
+      {
+        cached.lists[i] = neighbourhood.neighbours(p);
+        cached.listed[i] = 1;
+      }
+      const std::vector<NonlocalNeighbour>& list = cached.lists[i];
       if (matrix && fiber)
       {
-        const std::array<double, 2> m = neighbourhood.means(
-          p, shear_sorted.data(), stretch_sorted.data(), counted_sorted.data());
+        const std::array<double, 2> m = NonlocalNeighbourhood::list_means(
+          list, shear_sorted.data(), stretch_sorted.data(), counted_sorted.data());
         if (m[0] > c.matrix_shear_limit)
           byte |= materials::matrix_fails_now;
         if (m[1] > c.fiber_stretch_limit)
           byte |= materials::fibers_fail_now;
       }
-      else if (matrix &&
-               neighbourhood.mean(p, shear_sorted.data(), counted_sorted.data()) >
-                 c.matrix_shear_limit)
+      else if (matrix && NonlocalNeighbourhood::list_mean(list, shear_sorted.data(),
+                                                          counted_sorted.data()) >
+                           c.matrix_shear_limit)
         byte |= materials::matrix_fails_now;
-      else if (fiber &&
-               neighbourhood.mean(p, stretch_sorted.data(), counted_sorted.data()) >
-                 c.fiber_stretch_limit)
+      else if (fiber && NonlocalNeighbourhood::list_mean(list, stretch_sorted.data(),
+                                                         counted_sorted.data()) >
+                          c.fiber_stretch_limit)
         byte |= materials::fibers_fail_now;
     }
     points.failure[p] = byte;
@@ -94,12 +139,13 @@ bool uses_nonlocal_failure(const std::vector<const materials::Material*>& body_m
 }
 
 void decide_nonlocal_failures(const std::vector<const materials::Material*>& body_material,
-                              Particles& points)
+                              Particles& points, NonlocalFailureCache& cache)
 {
+  cache.bodies.resize(points.n_bodies());
   for (std::size_t b = 0; b < points.n_bodies(); ++b)
     if (const materials::FailureParameters* c = regularized_criterion(*body_material[b]))
       decide_for_body(*c, body_material[b]->uses_fibers(), points, points.begin_of(b),
-                      points.end_of(b));
+                      points.end_of(b), cache.bodies[b]);
 }
 
 std::vector<ParameterProblem> check_regularization(const materials::FailureParameters& failure,

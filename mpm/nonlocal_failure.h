@@ -8,12 +8,31 @@
 
 #include "core/parameter_problem.h"
 #include "materials/material.h"
+#include "mpm/nonlocal_average.h"
 #include "mpm/particles.h"
 
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace vulnus::mpm
 {
+/// What the criterion keeps between steps, per body: the binning of its points by reference
+/// position and the neighbour list of every point that has needed a mean. Reference positions
+/// do not move, so both hold while the body's points stay the same in the same order (the
+/// points' ids are compared at every step; a re-sort or a removal rebuilds them).
+struct NonlocalFailureCache
+{
+  struct Body
+  {
+    std::vector<std::uint32_t> ids;
+    std::unique_ptr<NonlocalNeighbourhood> neighbourhood;
+    std::vector<std::vector<NonlocalNeighbour>> lists; ///< by point (index - begin)
+    std::vector<char> listed;
+  };
+  std::vector<Body> bodies;
+};
+
 /// For every body whose law has a failure criterion with a regularization length: marks
 /// each of its points failure_decided_outside and sets matrix_fails_now / fibers_fail_now
 /// where the nonlocal mean of the intact phase's measure exceeds its limit. Totally failed
@@ -21,7 +40,7 @@ namespace vulnus::mpm
 /// Call after the deformation update and right before the stress update, which turns the
 /// marks into failures.
 void decide_nonlocal_failures(const std::vector<const materials::Material*>& body_material,
-                              Particles& points);
+                              Particles& points, NonlocalFailureCache& cache);
 
 /// Problems of a failure criterion's regularization length (parameter "regularization_length")
 /// on a grid of cell size h with n_ranks MPI ranks: the means need l >= h / 2 to hold more than

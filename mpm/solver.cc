@@ -379,7 +379,7 @@ void Solver::advance(const double cap)
 
   stress_settings.time_step = dt;
   if (nonlocal_failure)
-    decide_nonlocal_failures(materials_of_body, particles);
+    decide_nonlocal_failures(materials_of_body, particles, nonlocal_cache);
   update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
   if (subcycle)
   {

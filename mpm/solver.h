@@ -13,6 +13,7 @@
 #include "mpm/grid_update.h"
 #include "mpm/grid_to_particle.h"
 #include "mpm/interface_exchange.h"
+#include "mpm/nonlocal_failure.h"
 #include "mpm/particle_to_grid.h"
 #include "mpm/particles.h"
 #include "mpm/projectile_subcycle.h"
@@ -268,6 +269,7 @@ private:
   std::vector<Vector3> projectile_contact_force;  ///< per projectile point of this rank
   int n_projectile_substeps = 0;
   bool nonlocal_failure = false; ///< a body's law asks for the nonlocal failure criterion
+  NonlocalFailureCache nonlocal_cache;
   bool contact_active = false;
   int projectile_body = -1;
   Vector3 flight_axis = Vector3::UnitY();

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <random>
 #include <utility>
 #include <memory>
 
@@ -91,8 +93,9 @@ double failed_half_width(const double h, const double l, const double width)
       points.deformation_gradient[p] = F;
   const std::unique_ptr<materials::Material> law = gel(l);
   const std::vector<const materials::Material*> bodies{law.get()};
+  mpm::NonlocalFailureCache cache;
   if (l > 0.0)
-    mpm::decide_nonlocal_failures(bodies, points);
+    mpm::decide_nonlocal_failures(bodies, points, cache);
   mpm::StressUpdateSettings settings;
   settings.time_step = 1e-6;
   settings.cell_size = h;
@@ -166,4 +169,77 @@ TEST(NonlocalFailure, TheFailedZoneIsSetByTheLengthNotTheSpacing)
   EXPECT_NEAR(fine, 3e-3 - 0.30 * l, 0.5e-3);
   EXPECT_NEAR(coarse, fine, 0.5e-3);
   EXPECT_NEAR(failed_half_width(0.5e-3, 0.0, width), 3e-3 - 0.25e-3, 1e-9);
+}
+
+// A point's neighbour list gives the mean over every point within l (checked against a sum
+// over the whole body), and the criterion's cache, kept between steps, is rebuilt when the
+// points are re-sorted: the decisions equal a fresh run's.
+TEST(NonlocalAverage, NeighbourListsGiveTheMeansAndFollowAReSort)
+{
+  const double h = 0.5e-3, l = 1.5e-3;
+  mpm::Particles points = lattice(h, 3e-3, 2e-3);
+  std::vector<double> field(points.size());
+  std::vector<char> include(points.size(), 1);
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    const Vector3& x = points.position[p];
+    field[p] = std::sin(2e3 * x[0]) + 0.3 * std::cos(3e3 * x[1] * x[2] * 1e3);
+    include[p] = (p % 7) != 0;
+  }
+  const mpm::NonlocalNeighbourhood neighbourhood(points, 0, points.size(), l);
+  const std::vector<double> sorted = neighbourhood.in_cell_order(field.data());
+  const std::vector<char> sorted_include = neighbourhood.in_cell_order(include.data());
+  for (std::size_t p = 0; p < points.size(); p += 13)
+  {
+    // Against every point of the body, without the binning.
+    double sum = 0.0, weights = 0.0;
+    for (std::size_t q = 0; q < points.size(); ++q)
+    {
+      const double r2 = (points.reference_position[q] - points.reference_position[p])
+                            .cast<double>()
+                            .squaredNorm() / (l * l);
+      if (include[q] && r2 < 1.0)
+      {
+        const double w = (1.0 - r2) * (1.0 - r2) * points.reference_volume[q];
+        sum += w * field[q];
+        weights += w;
+      }
+    }
+    const std::vector<mpm::NonlocalNeighbour> list = neighbourhood.neighbours(p);
+    EXPECT_GT(list.size(), 10u);
+    // Single-precision weights and positions: 1e-6 of the field's range.
+    EXPECT_NEAR(mpm::NonlocalNeighbourhood::list_mean(list, sorted.data(), sorted_include.data()),
+                sum / weights, 1e-6);
+  }
+
+  // A band past the shear limit on one side: decide with a cache, re-sort the points (a fixed
+  // shuffle), decide again with the same cache, and compare with a fresh cache on the
+  // re-sorted points.
+  const double stretch = 1.4;
+  const mpm::Tensor2 F =
+      Eigen::Vector3d(stretch, 1 / std::sqrt(stretch), 1 / std::sqrt(stretch)).asDiagonal();
+  for (std::size_t p = 0; p < points.size(); ++p)
+    if (std::abs(points.position[p][1]) < 1.6e-3 && points.position[p][0] > 0.0)
+      points.deformation_gradient[p] = F;
+  const std::unique_ptr<materials::Material> law = gel(l);
+  const std::vector<const materials::Material*> bodies{law.get()};
+  mpm::NonlocalFailureCache kept;
+  mpm::decide_nonlocal_failures(bodies, points, kept);
+  std::vector<std::uint32_t> shuffled(points.size());
+  std::iota(shuffled.begin(), shuffled.end(), 0u);
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(7));
+  points.permute(shuffled);
+  for (std::uint8_t& flags : points.failure)
+    flags = 0;
+  mpm::Particles fresh_points = points;
+  mpm::decide_nonlocal_failures(bodies, points, kept);
+  mpm::NonlocalFailureCache fresh;
+  mpm::decide_nonlocal_failures(bodies, fresh_points, fresh);
+  std::size_t failing = 0;
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    EXPECT_EQ(points.failure[p], fresh_points.failure[p]) << "point " << p;
+    failing += (points.failure[p] & materials::matrix_fails_now) != 0;
+  }
+  EXPECT_GT(failing, 0u);
 }
