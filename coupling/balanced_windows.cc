@@ -59,7 +59,7 @@ void HybridSolver::exchange_balanced(const double time, const double dt, const b
     Eigen::VectorXd g;
     creation_residual(mpm_side, v_start, window_end - time, g);
     const Eigen::VectorXd dv = balance_solver.solve(g);
-    const std::vector<mpm::Vector3> free = held_components();
+    const std::vector<mpm::Vector3>& free = free_components;
     const double s1 = (time + dt - window_start) / window;
     for (std::size_t k = 0; k < n; ++k)
     {
@@ -80,7 +80,7 @@ double HybridSolver::creation_residual(const mpm::SharedNodeState& mpm_side,
   // step driven by velocity_end), the MPM substeps' so far (created), the MPM side's from now
   // to the end, less the correction the window is to apply. Components a support holds are
   // left out.
-  const std::vector<mpm::Vector3> free = held_components();
+  const std::vector<mpm::Vector3>& free = free_components;
   g.resize(3 * keys.size());
   double largest = 0.0;
   for (std::size_t k = 0; k < keys.size(); ++k)
@@ -95,15 +95,6 @@ double HybridSolver::creation_residual(const mpm::SharedNodeState& mpm_side,
   return largest;
 }
 
-std::vector<mpm::Vector3> HybridSolver::held_components() const
-{
-  const mpm::Grid& grid = mpm_solver->background_grid();
-  std::vector<mpm::Vector3> free(keys.size(), mpm::Vector3::Ones());
-  for (std::size_t k = 0; k < keys.size(); ++k)
-    mpm::apply_face_conditions(grid, split.mpm.domain_faces, keys[k], free[k]);
-  return free;
-}
-
 void HybridSolver::build_balance_matrix(const double window)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -114,7 +105,7 @@ void HybridSolver::build_balance_matrix(const double window)
     for (unsigned int c = 0; c < 3; ++c)
       dofs[3 * fe_node_index[i] + c] = static_cast<double>(nodes[i].dofs[c]);
   mpm_solver->rank_group().sum(dofs.data(), static_cast<int>(n));
-  const std::vector<mpm::Vector3> free = held_components();
+  const std::vector<mpm::Vector3>& free = free_components;
   const double factor = fe_solver->interface_mass_factor(window);
 
   fe_solver->prepare_interface_stiffness(window);
@@ -143,7 +134,7 @@ void HybridSolver::build_balance_matrix(const double window)
 
 void HybridSolver::factor_balance_matrix(const std::vector<double>& mpm_mass)
 {
-  const std::vector<mpm::Vector3> free = held_components();
+  const std::vector<mpm::Vector3>& free = free_components;
   Eigen::MatrixXd a = balance_matrix;
   for (Eigen::Index i = 0; i < a.rows(); ++i)
   {
@@ -169,7 +160,7 @@ void HybridSolver::balance_window(const double window, const double dt,
   // mass over the window, each guess is evaluated by the far field's step from the window's
   // start.
   const std::size_t n = keys.size();
-  const std::vector<mpm::Vector3> free = held_components();
+  const std::vector<mpm::Vector3>& free = free_components;
   double scale = 0.0, largest_mass = 0.0;
   for (std::size_t k = 0; k < n; ++k)
   {

@@ -85,6 +85,10 @@ void HybridSolver::match_interface_nodes(MPI_Comm communicator)
     elsewhere += slabs.rank_of_node(grid, key) != ranks.rank();
   fe_nodes_on_other_mpm_ranks = ranks.sum(elsewhere);
 
+  free_components.assign(keys.size(), mpm::Vector3::Ones());
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    mpm::apply_face_conditions(grid, split.mpm.domain_faces, keys[k], free_components[k]);
+
   fe_mass.assign(keys.size(), 0.0);
   const std::vector<double> my_masses = fe_solver->interface_lumped_masses();
   for (std::size_t i = 0; i < fe_node_index.size(); ++i)

@@ -199,8 +199,6 @@ private:
   /// The balance's chord matrix for this window: balance_matrix plus the MPM nodal masses,
   /// identity rows for components a support holds.
   void factor_balance_matrix(const std::vector<double>& mpm_mass);
-  /// 1 for every free component of each interface node, 0 where a grid-face support holds it.
-  std::vector<mpm::Vector3> held_components() const;
   /// Into g (3 per key): the momentum a balanced window creates at each shared node if its end
   /// velocity is velocity_end and this substep's MPM force holds for `remaining` seconds;
   /// returns its largest component, kg m/s.
@@ -219,6 +217,8 @@ private:
   std::vector<std::int64_t> keys;         ///< every interface node's grid key, sorted
   std::vector<std::size_t> fe_node_index; ///< position in keys of each FE interface node owned here
   std::vector<double> fe_mass;            ///< lumped FE mass of each key, kg
+  /// 1 for every free component of each key's node, 0 where a grid-face support holds it.
+  std::vector<mpm::Vector3> free_components;
   std::size_t fe_nodes_on_other_mpm_ranks = 0;
   InterfaceLedger book;
 

@@ -213,6 +213,15 @@ struct FarFieldSolver::Data
   double kinetic_energy() const;
 };
 
+/// The vector component of each dof of a cell (system_to_component_index's first entry).
+inline std::vector<unsigned int> dof_components(const dealii::FESystem<3>& fe)
+{
+  std::vector<unsigned int> component(fe.n_dofs_per_cell());
+  for (unsigned int i = 0; i < component.size(); ++i)
+    component[i] = fe.system_to_component_index(i).first;
+  return component;
+}
+
 /// The Newmark velocity weight gamma of the configured integrator (1/2 for the explicit and the
 /// average-acceleration steps).
 double integrator_gamma(const FeSceneParameters& prm);

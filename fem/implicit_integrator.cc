@@ -94,9 +94,7 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
                         update_values | update_gradients | update_JxW_values);
   const unsigned int n_dofs = d.fe.n_dofs_per_cell();
   std::vector<types::global_dof_index> dofs(n_dofs);
-  std::vector<unsigned int> component(n_dofs);
-  for (unsigned int i = 0; i < n_dofs; ++i)
-    component[i] = d.fe.system_to_component_index(i).first;
+  const std::vector<unsigned int> component = dof_components(d.fe);
   std::vector<Tensor<1, 3>> grads(n_dofs);
   std::vector<double> values(n_dofs), u_local(n_dofs), a_local(n_dofs), f_values(n_dofs),
       inertia_values(n_dofs);

@@ -70,9 +70,7 @@ void FarFieldSolver::prepare_interface_stiffness(const double dt)
                         update_values | update_gradients | update_JxW_values);
   const unsigned int n_dofs = d.fe.n_dofs_per_cell();
   std::vector<types::global_dof_index> dofs(n_dofs);
-  std::vector<unsigned int> component(n_dofs);
-  for (unsigned int i = 0; i < n_dofs; ++i)
-    component[i] = d.fe.system_to_component_index(i).first;
+  const std::vector<unsigned int> component = dof_components(d.fe);
   std::vector<Tensor<1, 3>> grads(n_dofs);
   std::vector<double> values(n_dofs), u_local(n_dofs);
   FullMatrix<double> cell_matrix(n_dofs, n_dofs);

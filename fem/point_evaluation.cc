@@ -36,9 +36,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
                                                               Vector* condensed)
 {
   const unsigned int n_dofs = fe.n_dofs_per_cell();
-  std::vector<unsigned int> component(n_dofs);
-  for (unsigned int i = 0; i < n_dofs; ++i)
-    component[i] = fe.system_to_component_index(i).first;
+  const std::vector<unsigned int> component = dof_components(fe);
 
   const materials::FailureParameters* criterion = proximity_criterion();
   const bool fibers = material->uses_fibers();
