@@ -104,7 +104,8 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                                                 const KinematicsSettings& s,
                                                 const GridFields& fields,
                                                 const std::vector<Vector3>& gradient_velocity,
-                                                Particles& particles, double* volumetric_rate)
+                                                Particles& particles, double* volumetric_rate,
+                                                FailureMeasures* measures)
 {
   const std::size_t n_bodies = particles.n_bodies();
   const double dt = s.time_step;
@@ -131,6 +132,12 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    }
                    continue;
                  }
+                 const materials::FailureParameters* criterion =
+                     measures ? measures->criterion[b] : nullptr;
+                 const bool fibers = criterion && measures->fibers[b];
+                 std::uint8_t* passed = criterion ? measures->passed.data() : nullptr;
+                 if (criterion)
+                   measures->filled[b] = 1;
                  const double lp = transfer.half_size_cells[b];
                  // Named here: clang 14 rejects the outer function's parameters inside an OpenMP
                  // loop nested in two lambdas.
@@ -178,6 +185,8 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                      volumetric_rate[p] =
                          (J_new > 0.0 && J_old > 0.0) ? std::log(J_new / J_old) / dt : L.trace();
                    }
+                   if (criterion)
+                     passed[p] = limits_passed(*criterion, fibers, F, particles.fiber_direction[p]);
                  }
                }
              });

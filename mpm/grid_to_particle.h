@@ -4,6 +4,7 @@
 // position update in one gather. Rigid bodies translate with their rigid velocity.
 #pragma once
 
+#include "mpm/failure_measures.h"
 #include "mpm/grid.h"
 #include "mpm/grid_fields.h"
 #include "mpm/particles.h"
@@ -54,5 +55,6 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                                                 const KinematicsSettings& settings,
                                                 const GridFields& fields,
                                                 const std::vector<Vector3>& gradient_velocity,
-                                                Particles& particles, double* volumetric_rate);
+                                                Particles& particles, double* volumetric_rate,
+                                                FailureMeasures* measures = nullptr);
 } // namespace vulnus::mpm

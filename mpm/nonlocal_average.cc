@@ -69,14 +69,29 @@ std::vector<NonlocalNeighbour> NonlocalNeighbourhood::neighbours(const std::size
   std::vector<NonlocalNeighbour> list;
   const Vector3f& x = points.reference_position[p];
   const std::array<int, 3> c = cell_coordinates(x);
-  const double inverse_radius_squared = 1.0 / (radius * radius);
+  const double edge = radius / reach, radius_squared = radius * radius;
+  const double inverse_radius_squared = 1.0 / radius_squared;
   auto low = [&](const int d) { return std::max(c[d] - reach, 0); };
   auto high = [&](const int d) { return std::min(c[d] + reach, static_cast<int>(n[d]) - 1); };
+  // Squared distance along axis d from x to the nearest face of cell `cell` (0 in its own).
+  auto gap_squared = [&](const int d, const int cell) {
+    const double lower = origin[d] + cell * edge, upper = lower + edge;
+    const double gap = cell < c[d] ? x[d] - upper : cell > c[d] ? lower - x[d] : 0.0;
+    return gap > 0.0 ? gap * gap : 0.0;
+  };
   for (int k = low(2); k <= high(2); ++k)
     for (int j = low(1); j <= high(1); ++j)
     {
-      const std::size_t row_begin = cell_start[cell_index({low(0), j, k})];
-      const std::size_t row_end = cell_start[cell_index({high(0), j, k}) + 1];
+      const double across = gap_squared(1, j) + gap_squared(2, k);
+      if (across >= radius_squared)
+        continue;
+      int first_cell = low(0), last_cell = high(0);
+      while (first_cell < c[0] && across + gap_squared(0, first_cell) >= radius_squared)
+        ++first_cell;
+      while (last_cell > c[0] && across + gap_squared(0, last_cell) >= radius_squared)
+        --last_cell;
+      const std::size_t row_begin = cell_start[cell_index({first_cell, j, k})];
+      const std::size_t row_end = cell_start[cell_index({last_cell, j, k}) + 1];
       for (std::size_t s = row_begin; s < row_end; ++s)
       {
         const double r2 = (position[s] - x).squaredNorm() * inverse_radius_squared;
@@ -133,21 +148,49 @@ std::array<double, 2> NonlocalNeighbourhood::means(const std::size_t p, const do
   return list_means(neighbours(p), first_values, second_values, include);
 }
 
+namespace
+{
+/// Per cell of an n[0] x n[1] x n[2] box (x fastest), the largest value over the cells within
+/// `reach` along every axis (separable: along x, then y, then z).
+template <class T>
+std::vector<T> largest_nearby(std::vector<T> in, const std::array<std::size_t, 3>& n,
+                              const std::size_t reach)
+{
+  std::vector<T> out(in.size());
+  const std::array<std::size_t, 3> stride{{1, n[0], n[0] * n[1]}};
+  for (int d = 0; d < 3; ++d)
+  {
+    // Lines along d, each given by its first cell.
+    const int a = d == 0 ? 1 : 0, b = d == 2 ? 1 : 2;
+    const long lines = static_cast<long>(n[a] * n[b]);
+#pragma omp parallel for schedule(static)
+    for (long line = 0; line < lines; ++line)
+    {
+      const std::size_t start = (static_cast<std::size_t>(line) % n[a]) * stride[a] +
+                                (static_cast<std::size_t>(line) / n[a]) * stride[b];
+      for (std::size_t along = 0; along < n[d]; ++along)
+      {
+        const std::size_t high = std::min(along + reach, n[d] - 1);
+        T largest = in[start + along * stride[d]];
+        for (std::size_t m = along > reach ? along - reach : 0; m <= high; ++m)
+          largest = std::max(largest, in[start + m * stride[d]]);
+        out[start + along * stride[d]] = largest;
+      }
+    }
+    std::swap(in, out);
+  }
+  return in;
+}
+} // namespace
+
+std::vector<double>
+NonlocalNeighbourhood::largest_within_the_radius(const std::vector<double>& per_cell) const
+{
+  return largest_nearby(per_cell, n, reach);
+}
+
 std::vector<char> NonlocalNeighbourhood::grown_by_the_radius(const std::vector<char>& flags) const
 {
-  std::vector<char> grown(flags.size(), 0);
-  const std::size_t r = reach;
-  for (std::size_t k = 0; k < n[2]; ++k)
-    for (std::size_t j = 0; j < n[1]; ++j)
-      for (std::size_t i = 0; i < n[0]; ++i)
-      {
-        if (!flags[cell_index({static_cast<int>(i), static_cast<int>(j), static_cast<int>(k)})])
-          continue;
-        for (std::size_t kk = k > r ? k - r : 0; kk <= std::min(k + r, n[2] - 1); ++kk)
-          for (std::size_t jj = j > r ? j - r : 0; jj <= std::min(j + r, n[1] - 1); ++jj)
-            for (std::size_t ii = i > r ? i - r : 0; ii <= std::min(i + r, n[0] - 1); ++ii)
-              grown[ii + n[0] * (jj + n[1] * kk)] = 1;
-      }
-  return grown;
+  return largest_nearby(flags, n, reach);
 }
 } // namespace vulnus::mpm

@@ -59,6 +59,14 @@ public:
   std::size_t n_cells() const { return cell_start.size() - 1; }
   /// Index of the cell holding binned point p.
   std::size_t cell_of(std::size_t p) const { return cell_of_point[p - first]; }
+  /// The binned points of cell c are binned_at(s) for s in [cell_begin(c), cell_end(c)),
+  /// each as its index q - begin.
+  std::size_t cell_begin(std::size_t c) const { return cell_start[c]; }
+  std::size_t cell_end(std::size_t c) const { return cell_start[c + 1]; }
+  std::size_t binned_at(std::size_t s) const { return order[s] - first; }
+  /// Per cell, the largest of a per-cell field over the cells within two cells of it (which
+  /// hold every point within the radius of the cell's points).
+  std::vector<double> largest_within_the_radius(const std::vector<double>& per_cell) const;
   /// Flags every cell that holds a point within the radius of a point in a flagged cell (the
   /// cells within two cells of it).
   std::vector<char> grown_by_the_radius(const std::vector<char>& cell_flags) const;

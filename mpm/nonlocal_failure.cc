@@ -1,6 +1,8 @@
-// Hot cells (a point past a limit by the cheap bound), candidates within the radius of them,
-// exact measures within the radius of those, then the means at the candidates over their
-// neighbour lists (made once a point first needs a mean, kept while the points stay put).
+// Hot cells per phase (a point past that phase's limit, the shear by its cheap bound),
+// candidates within the radius of them, exact shear measures within the radius of the shear
+// candidates, then the means at the candidates whose last mean may have moved past the limit
+// (mpm/nonlocal_drift.h), over their neighbour lists (made when a point comes to need a mean,
+// kept while it does and the points stay put, up to a memory budget).
 #include "mpm/nonlocal_failure.h"
 
 #include "materials/material_parameters.h"
@@ -35,59 +37,90 @@ const NonlocalNeighbourhood& neighbourhood_of(NonlocalFailureCache::Body& cached
     cached.neighbourhood = std::make_unique<NonlocalNeighbourhood>(points, begin, end, radius);
     cached.lists.assign(n, {});
     cached.listed.assign(n, 0);
+    cached.listed_entries = 0;
+    cached.shear_drift.reset(*cached.neighbourhood, n);
+    cached.stretch_drift.reset(*cached.neighbourhood, n);
   }
   return *cached.neighbourhood;
 }
 
 void decide_for_body(const materials::FailureParameters& c, const bool fibers,
                      Particles& points, const std::size_t begin, const std::size_t end,
-                     NonlocalFailureCache::Body& cached)
+                     NonlocalFailureCache::Body& cached, const std::size_t max_listed_entries,
+                     const std::uint8_t* passed)
 {
   const long n = static_cast<long>(end - begin);
   if (n == 0)
     return;
   const NonlocalNeighbourhood& neighbourhood =
       neighbourhood_of(cached, points, begin, end, c.regularization_length);
-  std::vector<double> shear(n), stretch(n, 0.0);
+  // A weighted mean passes a limit only where some value within the radius does, so each
+  // phase's means are needed only within the radius of the cells holding a point past its
+  // limit (the shear by its bound), and only at points whose phase is still intact.
   std::vector<char> counted(n);
+  std::vector<char> hot_shear(neighbourhood.n_cells(), 0), hot_stretch(neighbourhood.n_cells(), 0);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i)
   {
     const std::size_t p = begin + i;
     counted[i] = (points.failure[p] & materials::total_failure) != materials::total_failure;
-    const Tensor2& F = points.deformation_gradient[p];
-    shear[i] = materials::matrix_shear_bound(c, F);
-    if (fibers)
-      stretch[i] = (F * points.fiber_direction[p].cast<double>().normalized()).norm();
-  }
-  std::vector<char> hot(neighbourhood.n_cells(), 0);
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i)
-    if (counted[i] && (shear[i] > c.matrix_shear_limit ||
-                       (fibers && stretch[i] > c.fiber_stretch_limit)))
+    if (!counted[i])
+      continue;
+    const std::uint8_t past =
+      passed ? passed[i]
+             : limits_passed(c, fibers, points.deformation_gradient[p], points.fiber_direction[p]);
+    if (past & shear_past_limit)
     {
 #pragma omp atomic write
-      hot[neighbourhood.cell_of(begin + i)] = 1;
+      hot_shear[neighbourhood.cell_of(p)] = 1;
     }
-  const std::vector<char> candidate = neighbourhood.grown_by_the_radius(hot);
-  // Exact shear measures are needed only around the candidates whose matrix can still fail
-  // (a point with failed matrix and intact fibers needs the stretch mean alone).
-  std::vector<char> shear_mean_needed(neighbourhood.n_cells(), 0);
-#pragma omp parallel for schedule(static)
+    if (past & stretch_past_limit)
+    {
+#pragma omp atomic write
+      hot_stretch[neighbourhood.cell_of(p)] = 1;
+    }
+  }
+  const std::vector<char> shear_candidate = neighbourhood.grown_by_the_radius(hot_shear);
+  const std::vector<char> stretch_candidate =
+    fibers ? neighbourhood.grown_by_the_radius(hot_stretch) : hot_stretch;
+  auto needs_shear_mean = [&](const long i) {
+    return counted[i] && shear_candidate[neighbourhood.cell_of(begin + i)] &&
+           !(points.failure[begin + i] & materials::matrix_failed);
+  };
+  auto needs_stretch_mean = [&](const long i) {
+    return fibers && counted[i] && stretch_candidate[neighbourhood.cell_of(begin + i)] &&
+           !(points.failure[begin + i] & materials::fiber_failed);
+  };
+  // Exact shear measures (eigenvalues) are needed only within the radius of the points that
+  // need a shear mean, and changes of the stretch within the radius of those needing its mean.
+  const long cells = static_cast<long>(neighbourhood.n_cells());
+  std::vector<char> shear_mean_needed(cells, 0), stretch_mean_needed(cells, 0);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (long cell = 0; cell < cells; ++cell)
+    if (shear_candidate[cell] || stretch_candidate[cell])
+      for (std::size_t s = neighbourhood.cell_begin(cell); s < neighbourhood.cell_end(cell); ++s)
+      {
+        const long i = static_cast<long>(neighbourhood.binned_at(s));
+        shear_mean_needed[cell] |= needs_shear_mean(i);
+        stretch_mean_needed[cell] |= needs_stretch_mean(i);
+      }
+  const std::vector<char> measured = neighbourhood.grown_by_the_radius(shear_mean_needed);
+  const std::vector<char> stretched =
+    fibers ? neighbourhood.grown_by_the_radius(stretch_mean_needed) : stretch_mean_needed;
+  std::vector<double> shear(n, 0.0), stretch(n, 0.0);
+#pragma omp parallel for schedule(dynamic, 2048)
   for (long i = 0; i < n; ++i)
   {
     const std::size_t cell = neighbourhood.cell_of(begin + i);
-    if (counted[i] && candidate[cell] && !(points.failure[begin + i] & materials::matrix_failed))
-    {
-#pragma omp atomic write
-      shear_mean_needed[cell] = 1;
-    }
+    const Tensor2& F = points.deformation_gradient[begin + i];
+    if (measured[cell])
+      shear[i] = materials::matrix_shear_at(c, F);
+    if (stretched[cell])
+      stretch[i] = fiber_stretch(F, points.fiber_direction[begin + i]);
   }
-  const std::vector<char> measured = neighbourhood.grown_by_the_radius(shear_mean_needed);
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i)
-    if (measured[neighbourhood.cell_of(begin + i)])
-      shear[i] = materials::matrix_shear_at(c, points.deformation_gradient[begin + i]);
+  cached.shear_drift.advance(neighbourhood, shear.data(), counted.data(), measured);
+  if (fibers)
+    cached.stretch_drift.advance(neighbourhood, stretch.data(), counted.data(), stretched);
   const std::vector<double> shear_sorted = neighbourhood.in_cell_order(shear.data());
   const std::vector<double> stretch_sorted = neighbourhood.in_cell_order(stretch.data());
   const std::vector<char> counted_sorted = neighbourhood.in_cell_order(counted.data());
@@ -97,33 +130,69 @@ void decide_for_body(const materials::FailureParameters& c, const bool fibers,
     const std::size_t p = begin + i;
     std::uint8_t byte = (points.failure[p] & materials::total_failure) |
                         materials::failure_decided_outside;
-    if (counted[i] && candidate[neighbourhood.cell_of(p)])
+    const std::size_t cell = neighbourhood.cell_of(p);
+    const bool shear_needed = needs_shear_mean(i), stretch_needed = needs_stretch_mean(i);
+    if (!shear_needed && !stretch_needed && cached.listed[i])
     {
-      const bool matrix = !(byte & materials::matrix_failed);
-      const bool fiber = fibers && !(byte & materials::fiber_failed);
-      if ((matrix || fiber) && !cached.listed[i])
+      // A point that needs no mean now gives its list back (it may need it again later).
+#pragma omp atomic update
+      cached.listed_entries -= cached.lists[i].size();
+      std::vector<NonlocalNeighbour>().swap(cached.lists[i]);
+      cached.listed[i] = 0;
+    }
+    const bool matrix =
+      shear_needed && cached.shear_drift.may_pass(i, cell, c.matrix_shear_limit);
+    const bool fiber =
+      stretch_needed && cached.stretch_drift.may_pass(i, cell, c.fiber_stretch_limit);
+    if (matrix || fiber)
+    {
+#pragma omp atomic update
+      cached.means_taken += matrix + fiber;
+      std::vector<NonlocalNeighbour> unkept;
+      if (!cached.listed[i])
       {
-        cached.lists[i] = neighbourhood.neighbours(p);
-        cached.listed[i] = 1;
+        unkept = neighbourhood.neighbours(p);
+        std::size_t entries = 0;
+#pragma omp atomic capture
+        entries = cached.listed_entries += unkept.size();
+        if (entries <= max_listed_entries)
+        {
+          cached.lists[i] = std::move(unkept);
+          cached.listed[i] = 1;
+        }
+        else
+        {
+#pragma omp atomic update
+          cached.listed_entries -= unkept.size();
+        }
       }
-      const std::vector<NonlocalNeighbour>& list = cached.lists[i];
+      const std::vector<NonlocalNeighbour>& list = cached.listed[i] ? cached.lists[i] : unkept;
+      double shear_mean = 0.0, stretch_mean = 0.0;
       if (matrix && fiber)
       {
         const std::array<double, 2> m = NonlocalNeighbourhood::list_means(
           list, shear_sorted.data(), stretch_sorted.data(), counted_sorted.data());
-        if (m[0] > c.matrix_shear_limit)
+        shear_mean = m[0];
+        stretch_mean = m[1];
+      }
+      else if (matrix)
+        shear_mean = NonlocalNeighbourhood::list_mean(list, shear_sorted.data(),
+                                                      counted_sorted.data());
+      else
+        stretch_mean = NonlocalNeighbourhood::list_mean(list, stretch_sorted.data(),
+                                                        counted_sorted.data());
+      if (matrix)
+      {
+        cached.shear_drift.computed(i, cell, shear_mean, c.matrix_shear_limit);
+        if (shear_mean > c.matrix_shear_limit)
           byte |= materials::matrix_fails_now;
-        if (m[1] > c.fiber_stretch_limit)
+      }
+      if (fiber)
+      {
+        cached.stretch_drift.computed(i, cell, stretch_mean, c.fiber_stretch_limit);
+        if (stretch_mean > c.fiber_stretch_limit)
           byte |= materials::fibers_fail_now;
       }
-      else if (matrix && NonlocalNeighbourhood::list_mean(list, shear_sorted.data(),
-                                                          counted_sorted.data()) >
-                           c.matrix_shear_limit)
-        byte |= materials::matrix_fails_now;
-      else if (fiber && NonlocalNeighbourhood::list_mean(list, stretch_sorted.data(),
-                                                         counted_sorted.data()) >
-                          c.fiber_stretch_limit)
-        byte |= materials::fibers_fail_now;
     }
     points.failure[p] = byte;
   }
@@ -139,13 +208,34 @@ bool uses_nonlocal_failure(const std::vector<const materials::Material*>& body_m
 }
 
 void decide_nonlocal_failures(const std::vector<const materials::Material*>& body_material,
-                              Particles& points, NonlocalFailureCache& cache)
+                              Particles& points, NonlocalFailureCache& cache,
+                              FailureMeasures* measures)
 {
   cache.bodies.resize(points.n_bodies());
   for (std::size_t b = 0; b < points.n_bodies(); ++b)
     if (const materials::FailureParameters* c = regularized_criterion(*body_material[b]))
-      decide_for_body(*c, body_material[b]->uses_fibers(), points, points.begin_of(b),
-                      points.end_of(b), cache.bodies[b]);
+    {
+      const std::size_t begin = points.begin_of(b);
+      const bool measured = measures && measures->filled.size() > b && measures->filled[b] &&
+                            measures->passed.size() == points.size();
+      decide_for_body(*c, body_material[b]->uses_fibers(), points, begin, points.end_of(b),
+                      cache.bodies[b], cache.max_listed_entries,
+                      measured ? measures->passed.data() + begin : nullptr);
+      if (measured)
+        measures->filled[b] = 0;
+    }
+}
+
+FailureMeasures failure_measures_for(const std::vector<const materials::Material*>& body_material)
+{
+  FailureMeasures measures;
+  for (const materials::Material* m : body_material)
+  {
+    measures.criterion.push_back(regularized_criterion(*m));
+    measures.fibers.push_back(m->uses_fibers());
+  }
+  measures.filled.assign(body_material.size(), 0);
+  return measures;
 }
 
 std::vector<ParameterProblem> check_regularization(const materials::FailureParameters& failure,

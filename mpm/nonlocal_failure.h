@@ -8,9 +8,12 @@
 
 #include "core/parameter_problem.h"
 #include "materials/material.h"
+#include "mpm/failure_measures.h"
 #include "mpm/nonlocal_average.h"
+#include "mpm/nonlocal_drift.h"
 #include "mpm/particles.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -18,7 +21,8 @@
 namespace vulnus::mpm
 {
 /// What the criterion keeps between steps, per body: the binning of its points by reference
-/// position and the neighbour list of every point that has needed a mean. Reference positions
+/// position, the neighbour list of every point that needs a mean, and how far each point's
+/// last means may have moved since (mpm/nonlocal_drift.h). Reference positions
 /// do not move, so both hold while the body's points stay the same in the same order (the
 /// points' ids are compared at every step; a re-sort or a removal rebuilds them).
 struct NonlocalFailureCache
@@ -29,8 +33,14 @@ struct NonlocalFailureCache
     std::unique_ptr<NonlocalNeighbourhood> neighbourhood;
     std::vector<std::vector<NonlocalNeighbour>> lists; ///< by point (index - begin)
     std::vector<char> listed;
+    std::size_t listed_entries = 0;
+    std::size_t means_taken = 0; ///< means computed, added up over calls
+    NonlocalMeanDrift shear_drift, stretch_drift;
   };
   std::vector<Body> bodies;
+  /// Neighbours kept over all lists of a body (8 bytes each: 256 MiB). Lists of points that
+  /// need no mean are given back; beyond this, means are taken from lists made on the spot.
+  std::size_t max_listed_entries = std::size_t(1) << 25;
 };
 
 /// For every body whose law has a failure criterion with a regularization length: marks
@@ -38,9 +48,15 @@ struct NonlocalFailureCache
 /// where the nonlocal mean of the intact phase's measure exceeds its limit. Totally failed
 /// points (debris, F reset to a volume change) neither fail again nor count in the means.
 /// Call after the deformation update and right before the stress update, which turns the
-/// marks into failures.
+/// marks into failures. `measures`, when given, holds which limits the points of the bodies
+/// the deformation update flagged pass (used up here); the others are checked here.
 void decide_nonlocal_failures(const std::vector<const materials::Material*>& body_material,
-                              Particles& points, NonlocalFailureCache& cache);
+                              Particles& points, NonlocalFailureCache& cache,
+                              FailureMeasures* measures = nullptr);
+
+/// The per-body part of what the deformation update flags for the criterion (a criterion for
+/// each body whose law asks for the nonlocal one).
+FailureMeasures failure_measures_for(const std::vector<const materials::Material*>& body_material);
 
 /// Problems of a failure criterion's regularization length (parameter "regularization_length")
 /// on a grid of cell size h with n_ranks MPI ranks: the means need l >= h / 2 to hold more than

@@ -40,6 +40,8 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   }
 
   nonlocal_failure = uses_nonlocal_failure(materials_of_body);
+  if (nonlocal_failure)
+    failure_measures = failure_measures_for(materials_of_body);
   for (std::size_t b = 0; b < n_bodies; ++b)
     if (const materials::FailureParameters* c = materials_of_body[b]->failure_criterion())
       for (const ParameterProblem& p : check_regularization(*c, scene.cell_size, ranks.size()))
@@ -372,14 +374,22 @@ void Solver::advance(const double cap)
     if (shared.partner)
       impose_shared_velocities(fields.velocity);
   }
+  if (nonlocal_failure)
+  {
+    failure_measures.passed.resize(particles.size());
+  }
   update_deformation_gradients_and_positions(grid, transfer, kinematics, fields,
                                              musl ? fields.velocity : fields.velocity_new,
-                                             particles, volumetric_rate_or_null());
+                                             particles, volumetric_rate_or_null(),
+                                             nonlocal_failure ? &failure_measures : nullptr);
   lap(timings.grid_to_particle);
 
   stress_settings.time_step = dt;
   if (nonlocal_failure)
-    decide_nonlocal_failures(materials_of_body, particles, nonlocal_cache);
+  {
+    decide_nonlocal_failures(materials_of_body, particles, nonlocal_cache, &failure_measures);
+    lap(timings.nonlocal_failure);
+  }
   update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
   if (subcycle)
   {

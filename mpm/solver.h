@@ -46,13 +46,14 @@ struct PhaseTimes
   double grid_update = 0.0; ///< nodal velocities, forces, face conditions
   double contact = 0.0;     ///< the contact pass (nodes where bodies meet)
   double grid_to_particle = 0.0;
+  double nonlocal_failure = 0.0; ///< the nonlocal failure criterion's means
   double stress_update = 0.0;
   double projectile_substeps = 0.0; ///< a subcycled projectile's own steps
   double checks_and_sorting = 0.0;
   double coupling = 0.0; ///< the partner's exchange, including its own step
   double total() const
   {
-    return time_step + particle_to_grid + grid_update + contact + grid_to_particle + stress_update +
+    return time_step + particle_to_grid + grid_update + contact + grid_to_particle + nonlocal_failure + stress_update +
            projectile_substeps + checks_and_sorting + coupling;
   }
 };
@@ -270,6 +271,7 @@ private:
   int n_projectile_substeps = 0;
   bool nonlocal_failure = false; ///< a body's law asks for the nonlocal failure criterion
   NonlocalFailureCache nonlocal_cache;
+  FailureMeasures failure_measures; ///< taken by the deformation update for the criterion
   bool contact_active = false;
   int projectile_body = -1;
   Vector3 flight_axis = Vector3::UnitY();

@@ -190,7 +190,10 @@ std::string phase_report(const mpm::PhaseTimes& t)
   std::ostringstream o;
   o << std::setprecision(4) << "time step " << t.time_step << ", particle-to-grid "
     << t.particle_to_grid << ", grid update " << t.grid_update << ", contact " << t.contact
-    << ", grid-to-particle " << t.grid_to_particle << ", stress " << t.stress_update;
+    << ", grid-to-particle " << t.grid_to_particle;
+  if (t.nonlocal_failure > 0.0)
+    o << ", nonlocal failure " << t.nonlocal_failure;
+  o << ", stress " << t.stress_update;
   if (t.projectile_substeps > 0.0)
     o << ", projectile substeps " << t.projectile_substeps;
   o << ", checks " << t.checks_and_sorting;

@@ -243,3 +243,85 @@ TEST(NonlocalAverage, NeighbourListsGiveTheMeansAndFollowAReSort)
   }
   EXPECT_GT(failing, 0u);
 }
+
+namespace
+{
+/// Applies the marks the criterion left as the stress update would (tests without a stress
+/// update): the failures it decided, total failure where both phases have failed.
+void apply_marks(mpm::Particles& points)
+{
+  for (std::uint8_t& flags : points.failure)
+  {
+    std::uint8_t failed = flags & materials::total_failure;
+    if (flags & materials::matrix_fails_now)
+      failed |= materials::matrix_failed;
+    if (flags & materials::fibers_fail_now)
+      failed |= materials::fiber_failed;
+    flags = failed;
+  }
+}
+} // namespace
+
+// The kept cache skips the means that cannot have reached their limit since they were last
+// taken (their values' changes within l add up to less than the gap), and gives back the
+// lists of points that need no mean, within a budget of kept neighbours. Over steps of a
+// growing, uneven strain (matrix and fibers, points turning to debris), its decisions equal
+// those of a fresh cache, which takes every mean, at every step, with and without a budget
+// too small to keep every list.
+TEST(NonlocalFailure, SkippedMeansAndGivenBackListsChangeNoDecision)
+{
+  const double h = 0.5e-3, l = 1.5e-3;
+  mpm::Particles points = lattice(h, 3e-3, 2e-3);
+  materials::MaterialParameters m;
+  m.model = "transversely isotropic hyperelastic";
+  m.tissue.failure.enabled = true;
+  m.tissue.failure.matrix_shear_limit = 0.5;
+  m.tissue.failure.fiber_stretch_limit = 1.3;
+  m.tissue.failure.regularization_length = l;
+  const std::unique_ptr<materials::Material> law = materials::create_material(m);
+  const std::vector<const materials::Material*> bodies{law.get()};
+  mpm::Particles budget_points = points;
+  mpm::NonlocalFailureCache kept, budget;
+  budget.max_listed_entries = 2000;
+  std::size_t means_kept = 0, means_fresh = 0, failed = 0, debris = 0;
+  for (int step = 1; step <= 60; ++step)
+  {
+    const double t = step / 60.0;
+    for (mpm::Particles* set : {&points, &budget_points})
+      for (std::size_t p = 0; p < set->size(); ++p)
+      {
+        // Stretch along x (the fibers) growing with time, fastest near y = 0 and x = 1 mm,
+        // with an uneven part so that means and their gaps differ from point to point.
+        const Vector3 x = set->reference_position[p].cast<double>();
+        const double reach = std::exp(-std::pow(x[1] / 1.5e-3, 2) - std::pow((x[0] - 1e-3) / 3e-3, 2));
+        const double stretch = 1.0 + 0.8 * t * reach * (1.0 + 0.1 * std::sin(5e3 * x[2] + 3e3 * x[0]));
+        set->deformation_gradient[p] =
+            Eigen::Vector3d(stretch, 1 / std::sqrt(stretch), 1 / std::sqrt(stretch)).asDiagonal();
+      }
+    mpm::Particles fresh_points = points;
+    mpm::NonlocalFailureCache fresh;
+    mpm::decide_nonlocal_failures(bodies, points, kept);
+    mpm::decide_nonlocal_failures(bodies, budget_points, budget);
+    mpm::decide_nonlocal_failures(bodies, fresh_points, fresh);
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+      ASSERT_EQ(points.failure[p], fresh_points.failure[p]) << "step " << step << ", point " << p;
+      ASSERT_EQ(budget_points.failure[p], fresh_points.failure[p]) << "step " << step << ", point " << p;
+    }
+    EXPECT_LE(budget.bodies[0].listed_entries, budget.max_listed_entries);
+    means_kept += kept.bodies[0].means_taken;
+    means_fresh += fresh.bodies[0].means_taken;
+    kept.bodies[0].means_taken = 0;
+    apply_marks(points);
+    apply_marks(budget_points);
+  }
+  for (const std::uint8_t flags : points.failure)
+  {
+    failed += (flags & materials::matrix_failed) != 0;
+    debris += flags == materials::total_failure;
+  }
+  EXPECT_GT(failed, 100u);
+  EXPECT_GT(debris, 10u);
+  EXPECT_LT(failed, points.size() / 2) << "the strain should stay below the limits somewhere";
+  EXPECT_LT(means_kept, means_fresh / 2) << "most means should have been skipped";
+}
