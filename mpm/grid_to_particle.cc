@@ -105,7 +105,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                                                 const GridFields& fields,
                                                 const std::vector<Vector3>& gradient_velocity,
                                                 Particles& particles, double* volumetric_rate,
-                                                FailureMeasures* measures)
+                                                FailureLimitFlags* limit_flags)
 {
   const std::size_t n_bodies = particles.n_bodies();
   const double dt = s.time_step;
@@ -133,11 +133,11 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    continue;
                  }
                  const materials::FailureParameters* criterion =
-                     measures ? measures->criterion[b] : nullptr;
-                 const bool fibers = criterion && measures->fibers[b];
-                 std::uint8_t* passed = criterion ? measures->passed.data() : nullptr;
+                     limit_flags ? limit_flags->criterion[b] : nullptr;
+                 const bool fibers = criterion && limit_flags->fibers[b];
+                 std::uint8_t* passed = criterion ? limit_flags->passed.data() : nullptr;
                  if (criterion)
-                   measures->filled[b] = 1;
+                   limit_flags->filled[b] = 1;
                  const double lp = transfer.half_size_cells[b];
                  // Named here: clang 14 rejects the outer function's parameters inside an OpenMP
                  // loop nested in two lambdas.

@@ -4,7 +4,7 @@
 // position update in one gather. Rigid bodies translate with their rigid velocity.
 #pragma once
 
-#include "mpm/failure_measures.h"
+#include "mpm/failure_limit_flags.h"
 #include "mpm/grid.h"
 #include "mpm/grid_fields.h"
 #include "mpm/particles.h"
@@ -56,5 +56,5 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                                                 const GridFields& fields,
                                                 const std::vector<Vector3>& gradient_velocity,
                                                 Particles& particles, double* volumetric_rate,
-                                                FailureMeasures* measures = nullptr);
+                                                FailureLimitFlags* limit_flags = nullptr);
 } // namespace vulnus::mpm

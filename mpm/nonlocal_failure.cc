@@ -209,33 +209,33 @@ bool uses_nonlocal_failure(const std::vector<const materials::Material*>& body_m
 
 void decide_nonlocal_failures(const std::vector<const materials::Material*>& body_material,
                               Particles& points, NonlocalFailureCache& cache,
-                              FailureMeasures* measures)
+                              FailureLimitFlags* limit_flags)
 {
   cache.bodies.resize(points.n_bodies());
   for (std::size_t b = 0; b < points.n_bodies(); ++b)
     if (const materials::FailureParameters* c = regularized_criterion(*body_material[b]))
     {
       const std::size_t begin = points.begin_of(b);
-      const bool measured = measures && measures->filled.size() > b && measures->filled[b] &&
-                            measures->passed.size() == points.size();
+      const bool flagged = limit_flags && limit_flags->filled.size() > b &&
+                           limit_flags->filled[b] && limit_flags->passed.size() == points.size();
       decide_for_body(*c, body_material[b]->uses_fibers(), points, begin, points.end_of(b),
                       cache.bodies[b], cache.max_listed_entries,
-                      measured ? measures->passed.data() + begin : nullptr);
-      if (measured)
-        measures->filled[b] = 0;
+                      flagged ? limit_flags->passed.data() + begin : nullptr);
+      if (flagged)
+        limit_flags->filled[b] = 0;
     }
 }
 
-FailureMeasures failure_measures_for(const std::vector<const materials::Material*>& body_material)
+FailureLimitFlags failure_limit_flags_for(const std::vector<const materials::Material*>& body_material)
 {
-  FailureMeasures measures;
+  FailureLimitFlags flags;
   for (const materials::Material* m : body_material)
   {
-    measures.criterion.push_back(regularized_criterion(*m));
-    measures.fibers.push_back(m->uses_fibers());
+    flags.criterion.push_back(regularized_criterion(*m));
+    flags.fibers.push_back(m->uses_fibers());
   }
-  measures.filled.assign(body_material.size(), 0);
-  return measures;
+  flags.filled.assign(body_material.size(), 0);
+  return flags;
 }
 
 std::vector<ParameterProblem> check_regularization(const materials::FailureParameters& failure,

@@ -8,7 +8,7 @@
 
 #include "core/parameter_problem.h"
 #include "materials/material.h"
-#include "mpm/failure_measures.h"
+#include "mpm/failure_limit_flags.h"
 #include "mpm/nonlocal_average.h"
 #include "mpm/nonlocal_drift.h"
 #include "mpm/particles.h"
@@ -48,15 +48,15 @@ struct NonlocalFailureCache
 /// where the nonlocal mean of the intact phase's measure exceeds its limit. Totally failed
 /// points (debris, F reset to a volume change) neither fail again nor count in the means.
 /// Call after the deformation update and right before the stress update, which turns the
-/// marks into failures. `measures`, when given, holds which limits the points of the bodies
+/// marks into failures. `limit_flags`, when given, holds which limits the points of the bodies
 /// the deformation update flagged pass (used up here); the others are checked here.
 void decide_nonlocal_failures(const std::vector<const materials::Material*>& body_material,
                               Particles& points, NonlocalFailureCache& cache,
-                              FailureMeasures* measures = nullptr);
+                              FailureLimitFlags* limit_flags = nullptr);
 
 /// The per-body part of what the deformation update flags for the criterion (a criterion for
 /// each body whose law asks for the nonlocal one).
-FailureMeasures failure_measures_for(const std::vector<const materials::Material*>& body_material);
+FailureLimitFlags failure_limit_flags_for(const std::vector<const materials::Material*>& body_material);
 
 /// Problems of a failure criterion's regularization length (parameter "regularization_length")
 /// on a grid of cell size h with n_ranks MPI ranks: the means need l >= h / 2 to hold more than

@@ -41,7 +41,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
 
   nonlocal_failure = uses_nonlocal_failure(materials_of_body);
   if (nonlocal_failure)
-    failure_measures = failure_measures_for(materials_of_body);
+    failure_limit_flags = failure_limit_flags_for(materials_of_body);
   for (std::size_t b = 0; b < n_bodies; ++b)
     if (const materials::FailureParameters* c = materials_of_body[b]->failure_criterion())
       for (const ParameterProblem& p : check_regularization(*c, scene.cell_size, ranks.size()))
@@ -376,18 +376,18 @@ void Solver::advance(const double cap)
   }
   if (nonlocal_failure)
   {
-    failure_measures.passed.resize(particles.size());
+    failure_limit_flags.passed.resize(particles.size());
   }
   update_deformation_gradients_and_positions(grid, transfer, kinematics, fields,
                                              musl ? fields.velocity : fields.velocity_new,
                                              particles, volumetric_rate_or_null(),
-                                             nonlocal_failure ? &failure_measures : nullptr);
+                                             nonlocal_failure ? &failure_limit_flags : nullptr);
   lap(timings.grid_to_particle);
 
   stress_settings.time_step = dt;
   if (nonlocal_failure)
   {
-    decide_nonlocal_failures(materials_of_body, particles, nonlocal_cache, &failure_measures);
+    decide_nonlocal_failures(materials_of_body, particles, nonlocal_cache, &failure_limit_flags);
     lap(timings.nonlocal_failure);
   }
   update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);

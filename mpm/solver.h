@@ -271,7 +271,7 @@ private:
   int n_projectile_substeps = 0;
   bool nonlocal_failure = false; ///< a body's law asks for the nonlocal failure criterion
   NonlocalFailureCache nonlocal_cache;
-  FailureMeasures failure_measures; ///< taken by the deformation update for the criterion
+  FailureLimitFlags failure_limit_flags; ///< taken by the deformation update for the criterion
   bool contact_active = false;
   int projectile_body = -1;
   Vector3 flight_axis = Vector3::UnitY();

@@ -58,7 +58,7 @@ inline std::uint8_t limits_passed(const materials::FailureParameters& criterion,
 }
 
 /// Flags per point, set by the deformation update for the bodies with a criterion.
-struct FailureMeasures
+struct FailureLimitFlags
 {
   std::vector<const materials::FailureParameters*> criterion; ///< per body; nullptr: none
   std::vector<char> fibers;                                   ///< per body
