@@ -23,7 +23,8 @@ inline double fiber_stretch(const Tensor2& F, const Vector3f& fiber_direction)
 }
 
 /// The limits the measures of F pass (shear_past_limit, stretch_past_limit), compared without
-/// square roots and with room for rounding, so a point past a limit is never missed.
+/// square roots and with room for rounding, so a point past a limit is never missed (the
+/// limits are positive: the laws check them when a deck is read).
 inline std::uint8_t limits_passed(const materials::FailureParameters& criterion,
                                   const bool fibers, const Tensor2& F,
                                   const Vector3f& fiber_direction)
@@ -44,14 +45,14 @@ inline std::uint8_t limits_passed(const materials::FailureParameters& criterion,
     const double deviator_squared =
       (B - (B.trace() / 3.0) * Tensor2::Identity()).squaredNorm();
     const double limit = criterion.matrix_shear_limit;
-    if (limit < 0.0 || 2.0 * factor * factor * deviator_squared > room * limit * limit)
+    if (2.0 * factor * factor * deviator_squared > room * limit * limit)
       passed |= shear_past_limit;
   }
   if (fibers)
   {
     const double limit = criterion.fiber_stretch_limit;
     const Vector3 a = fiber_direction.cast<double>();
-    if (limit < 0.0 || (F * a).squaredNorm() > room * limit * limit * a.squaredNorm())
+    if ((F * a).squaredNorm() > room * limit * limit * a.squaredNorm())
       passed |= stretch_past_limit;
   }
   return passed;
