@@ -4,7 +4,11 @@
 // the last substep balances it exactly, re-stepping the far field from the window's start.
 #include "coupling/hybrid_solver.h"
 
+#include <array>
 #include <chrono>
+#include <cstdlib>
+#include <stdexcept>
+#include <unordered_map>
 #include <cmath>
 #include <sstream>
 
@@ -17,10 +21,7 @@ bool HybridSolver::has_implicit_windows() const
           split.fe.integrator == fem::TimeIntegrator::generalized_alpha);
 }
 
-bool HybridSolver::balances_windows() const
-{
-  return has_implicit_windows() && 3 * keys.size() <= max_balanced_interface_dofs;
-}
+bool HybridSolver::balances_windows() const { return has_implicit_windows(); }
 
 void HybridSolver::exchange_balanced(const double time, const double dt, const bool first_substep,
                                      const bool last_substep, const mpm::SharedNodeState& mpm_side,
@@ -95,6 +96,21 @@ double HybridSolver::creation_residual(const mpm::SharedNodeState& mpm_side,
   return largest;
 }
 
+void HybridSolver::interface_response(const std::vector<double>& fe_dofs,
+                                      const std::vector<std::size_t>& probe, const double factor,
+                                      std::vector<double>& response) const
+{
+  std::vector<dealii::types::global_dof_index> dofs;
+  for (const std::size_t j : probe)
+    dofs.push_back(static_cast<dealii::types::global_dof_index>(fe_dofs[j]));
+  const std::vector<dealii::Tensor<1, 3>> forces = fe_solver->interface_stiffness_response(dofs);
+  std::fill(response.begin(), response.end(), 0.0);
+  for (std::size_t i = 0; i < forces.size(); ++i)
+    for (unsigned int c = 0; c < 3; ++c)
+      response[3 * fe_node_index[i] + c] = factor * forces[i][c];
+  mpm_solver->rank_group().sum(response.data(), static_cast<int>(response.size()));
+}
+
 void HybridSolver::build_balance_matrix(const double window)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -109,22 +125,77 @@ void HybridSolver::build_balance_matrix(const double window)
   const double factor = fe_solver->interface_mass_factor(window);
 
   fe_solver->prepare_interface_stiffness(window);
-  balance_matrix = Eigen::MatrixXd::Zero(n, n);
-  std::vector<double> column(n);
-  for (std::size_t j = 0; j < n; ++j)
+  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<double> response(n);
+  if (n <= exact_balance_limit)
   {
-    if (free[j / 3][j % 3] == 0.0)
-      continue;
-    const std::vector<dealii::Tensor<1, 3>> forces = fe_solver->interface_stiffness_column(
-        static_cast<dealii::types::global_dof_index>(dofs[j]));
-    std::fill(column.begin(), column.end(), 0.0);
-    for (std::size_t i = 0; i < forces.size(); ++i)
-      for (unsigned int c = 0; c < 3; ++c)
-        column[3 * fe_node_index[i] + c] = factor * forces[i][c];
-    mpm_solver->rank_group().sum(column.data(), static_cast<int>(n));
-    for (std::size_t i = 0; i < n; ++i)
-      balance_matrix(i, j) = column[i];
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      if (free[j / 3][j % 3] == 0.0)
+        continue;
+      interface_response(dofs, {j}, factor, response);
+      for (std::size_t i = 0; i < n; ++i)
+        if (response[i] != 0.0)
+          entries.emplace_back(static_cast<int>(i), static_cast<int>(j), response[i]);
+    }
   }
+  else
+  {
+    // Probing: one solve moves every free dof of one component at the nodes whose grid
+    // indices have one residue modulo probe_period; the forces within probe_reach nodes of
+    // such a node are its column's (the far field's answer to a window's displacement decays
+    // within a few cells while a window lasts about a wave's transit of one), what lies
+    // farther is dropped.
+    const mpm::Grid& grid = mpm_solver->background_grid();
+    std::unordered_map<std::int64_t, std::size_t> index_of_key;
+    std::vector<std::array<int, 3>> ijk(keys.size());
+    for (std::size_t k = 0; k < keys.size(); ++k)
+    {
+      index_of_key.emplace(keys[k], k);
+      ijk[k] = grid.node_ijk(keys[k]);
+    }
+    auto residue = [](const int i) { return ((i % probe_period) + probe_period) % probe_period; };
+    std::vector<std::size_t> probe;
+    for (int r0 = 0; r0 < probe_period; ++r0)
+      for (int r1 = 0; r1 < probe_period; ++r1)
+        for (int r2 = 0; r2 < probe_period; ++r2)
+          for (unsigned int c = 0; c < 3; ++c)
+          {
+            const std::array<int, 3> wanted = {r0, r1, r2};
+            probe.clear();
+            for (std::size_t k = 0; k < keys.size(); ++k)
+              if (free[k][c] != 0.0 && residue(ijk[k][0]) == r0 && residue(ijk[k][1]) == r1 &&
+                  residue(ijk[k][2]) == r2)
+                probe.push_back(3 * k + c);
+            if (probe.empty())
+              continue;
+            interface_response(dofs, probe, factor, response);
+            for (std::size_t k = 0; k < keys.size(); ++k)
+            {
+              // The probed node nearest k: the offset of the wanted residue within the reach.
+              std::array<int, 3> at = ijk[k];
+              bool within = true;
+              for (int d = 0; d < 3; ++d)
+              {
+                int offset = residue(wanted[d] - ijk[k][d]);
+                if (offset > probe_reach)
+                  offset -= probe_period;
+                within = within && std::abs(offset) <= probe_reach;
+                at[d] += offset;
+              }
+              const auto found = index_of_key.find(grid.node_key(at[0], at[1], at[2]));
+              if (!within || found == index_of_key.end() || free[found->second][c] == 0.0)
+                continue;
+              for (unsigned int ci = 0; ci < 3; ++ci)
+                if (response[3 * k + ci] != 0.0)
+                  entries.emplace_back(static_cast<int>(3 * k + ci),
+                                       static_cast<int>(3 * found->second + c),
+                                       response[3 * k + ci]);
+            }
+          }
+  }
+  balance_matrix.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  balance_matrix.setFromTriplets(entries.begin(), entries.end());
   fe_solver->release_interface_stiffness();
   balance_window_length = window;
   ++book.balance_matrices;
@@ -135,19 +206,22 @@ void HybridSolver::build_balance_matrix(const double window)
 void HybridSolver::factor_balance_matrix(const std::vector<double>& mpm_mass)
 {
   const std::vector<mpm::Vector3>& free = free_components;
-  Eigen::MatrixXd a = balance_matrix;
-  for (Eigen::Index i = 0; i < a.rows(); ++i)
-  {
-    if (free[i / 3][i % 3] == 0.0)
-    {
-      a.row(i).setZero();
-      a.col(i).setZero();
-      a(i, i) = 1.0;
-    }
-    else
-      a(i, i) += mpm_mass[i / 3];
-  }
+  auto held = [&](const Eigen::Index i) { return free[i / 3][i % 3] == 0.0; };
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(balance_matrix.nonZeros() + balance_matrix.rows()));
+  for (Eigen::Index j = 0; j < balance_matrix.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(balance_matrix, j); it; ++it)
+      if (!held(it.row()) && !held(it.col()))
+        entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
+  for (Eigen::Index i = 0; i < balance_matrix.rows(); ++i)
+    entries.emplace_back(static_cast<int>(i), static_cast<int>(i), held(i) ? 1.0 : mpm_mass[i / 3]);
+  Eigen::SparseMatrix<double> a(balance_matrix.rows(), balance_matrix.cols());
+  a.setFromTriplets(entries.begin(), entries.end());
   balance_solver.compute(a);
+  if (balance_solver.info() != Eigen::Success)
+    throw std::runtime_error("balanced window: the interface's effective-mass matrix could not "
+                             "be factored (" + balance_solver.lastErrorMessage() +
+                             "); use Far field/Integrator = central difference");
   balance_mpm_mass = mpm_mass;
 }
 

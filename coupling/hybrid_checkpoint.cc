@@ -41,8 +41,18 @@ void HybridSolver::save(std::ostream& out) const
   binary::put(out, balance_window_length);
   binary::put(out, balance_scale);
   binary::put(out, static_cast<std::uint64_t>(balance_matrix.rows()));
-  out.write(reinterpret_cast<const char*>(balance_matrix.data()),
-            static_cast<std::streamsize>(sizeof(double) * balance_matrix.size()));
+  std::vector<std::int64_t> rows, columns;
+  std::vector<double> values;
+  for (Eigen::Index j = 0; j < balance_matrix.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(balance_matrix, j); it; ++it)
+    {
+      rows.push_back(it.row());
+      columns.push_back(it.col());
+      values.push_back(it.value());
+    }
+  binary::put_vector(out, rows);
+  binary::put_vector(out, columns);
+  binary::put_vector(out, values);
   binary::put_vector(out, balance_mpm_mass);
   out.write(tag, sizeof(tag));
   if (!out)
@@ -106,9 +116,24 @@ void HybridSolver::restore(std::istream& in)
   binary::get(in, rows);
   if (!in || rows > 3 * keys.size())
     throw std::runtime_error("hybrid checkpoint is inconsistent (balance matrix)");
+  std::vector<std::int64_t> entry_rows, entry_columns;
+  std::vector<double> values;
+  binary::get_vector(in, entry_rows);
+  binary::get_vector(in, entry_columns);
+  binary::get_vector(in, values);
+  if (!in || entry_rows.size() != values.size() || entry_columns.size() != values.size())
+    throw std::runtime_error("hybrid checkpoint is inconsistent (balance matrix)");
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t e = 0; e < values.size(); ++e)
+  {
+    if (entry_rows[e] < 0 || entry_columns[e] < 0 || std::uint64_t(entry_rows[e]) >= rows ||
+        std::uint64_t(entry_columns[e]) >= rows)
+      throw std::runtime_error("hybrid checkpoint is inconsistent (balance matrix entry)");
+    entries.emplace_back(static_cast<int>(entry_rows[e]), static_cast<int>(entry_columns[e]),
+                         values[e]);
+  }
   balance_matrix.resize(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(rows));
-  in.read(reinterpret_cast<char*>(balance_matrix.data()),
-          static_cast<std::streamsize>(sizeof(double) * balance_matrix.size()));
+  balance_matrix.setFromTriplets(entries.begin(), entries.end());
   std::vector<double> masses;
   binary::get_vector(in, masses);
   if (rows > 0 && masses.size() == keys.size())

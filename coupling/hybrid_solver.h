@@ -30,6 +30,8 @@
 #include "mpm/solver.h"
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
 
 #include <mpi.h>
 
@@ -105,12 +107,19 @@ public:
   /// Multi-step windows of an implicit far field.
   bool has_implicit_windows() const;
   /// Whether they balance their momentum within the window (coupling/balanced_windows.cc):
-  /// when the interface has at most max_balanced_interface_dofs dofs, since the far field's
-  /// effective interface mass takes one far-field solve per interface dof and is dense.
-  /// Otherwise the lagged correction takes the momentum back, stable only for windows below
-  /// about a quarter of a wave's transit of the interface cell.
+  /// always for implicit windows.
   bool balances_windows() const;
-  static constexpr std::size_t max_balanced_interface_dofs = 1500;
+  /// Up to this many interface dofs (default 750) the far field's effective interface mass
+  /// takes one far-field solve per dof (exact); beyond, it is probed (3 x 5^3 = 375 solves,
+  /// entries within 2 grid nodes of their dof kept).
+  std::size_t exact_balance_dofs() const { return exact_balance_limit; }
+  void set_exact_balance_dofs(const std::size_t n) { exact_balance_limit = n; }
+  /// The effective interface mass of the current window length, 3 per key, kg.
+  const Eigen::SparseMatrix<double>& effective_interface_mass() const { return balance_matrix; }
+  /// Probing: interface nodes of one probe are 5 grid nodes apart along some axis, so a
+  /// response within 2 nodes of a probed dof is that dof's alone.
+  static constexpr int probe_period = 5;
+  static constexpr int probe_reach = 2;
 
   // --- adaptive zone (coupling/adaptive_zone.cc) -----------------------------------------
   /// The zone now (it grows with the adaptive zone), m.
@@ -194,8 +203,13 @@ private:
   void balance_window(double window, double dt, const mpm::SharedNodeState& mpm_side,
                       const std::vector<mpm::Vector3>& v_start);
   /// The far field's effective interface mass over a window (its Newton matrix's Schur
-  /// complement on the interface, one far-field solve per interface dof) into balance_matrix.
+  /// complement on the interface: one far-field solve per interface dof, or probed beyond
+  /// exact_balance_dofs) into balance_matrix.
   void build_balance_matrix(double window);
+  /// The interface's forces (factor times the far field's, summed over ranks, 3 per key)
+  /// when the interface dofs `probe` (indices 3 k + c) move by 1 m.
+  void interface_response(const std::vector<double>& fe_dofs, const std::vector<std::size_t>& probe,
+                          double factor, std::vector<double>& response) const;
   /// The balance's chord matrix for this window: balance_matrix plus the MPM nodal masses,
   /// identity rows for components a support holds.
   void factor_balance_matrix(const std::vector<double>& mpm_mass);
@@ -236,10 +250,12 @@ private:
   std::string fe_state_at_window_start;
   std::vector<mpm::Vector3> fe_window_impulse;  ///< of the far field's step, not yet booked
   std::vector<mpm::Vector3> interface_now; ///< shared nodes' velocity after the last substep
-  Eigen::MatrixXd balance_matrix; ///< the far field's effective interface mass, 3 per key, kg
-  Eigen::PartialPivLU<Eigen::MatrixXd> balance_solver;
+  /// The far field's effective interface mass, 3 per key, kg (sparse when probed).
+  Eigen::SparseMatrix<double> balance_matrix;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> balance_solver;
   std::vector<double> balance_mpm_mass; ///< the MPM masses balance_solver was factored with
   double balance_window_length = 0.0; ///< s
+  std::size_t exact_balance_limit = 750;
   double balance_scale = 0.0; ///< largest (m_fe + m_mpm) |v| of an interface node so far, kg m/s
   /// The far field's Newton solves to about 1e-8 of its force scale, so its transmitted
   /// impulse, and the balance, are not exact below about this; what is left is taken back in

@@ -197,14 +197,16 @@ public:
 
   // --- interface stiffness of an implicit step (fem/interface_stiffness.cc) --------------
   /// Collective: assembles the implicit step's Newton matrix for a step of dt at the current
-  /// state, the interface and supports held, for interface_stiffness_column.
+  /// state, the interface and supports held, for interface_stiffness_response.
   void prepare_interface_stiffness(double dt);
   /// Collective: the forces this rank's interface nodes need (interface_nodes() order), N,
-  /// when the interface dof `dof` moves by 1 m at the step's end, the other interface dofs
-  /// held and the rest of the body free: a column of the Newton matrix's Schur complement on
-  /// the interface. Times interface_mass_factor(dt) it is the effective mass, kg, with which
-  /// the body resists a change of the interface velocity at the step's end.
-  std::vector<dealii::Tensor<1, 3>> interface_stiffness_column(dealii::types::global_dof_index dof) const;
+  /// when the interface dofs `dofs` each move by 1 m at the step's end, the other interface
+  /// dofs held and the rest of the body free: for one dof a column of the Newton matrix's
+  /// Schur complement on the interface, for several the sum of their columns (probing).
+  /// Times interface_mass_factor(dt) it is the effective mass, kg, with which the body
+  /// resists a change of the interface velocity at the step's end.
+  std::vector<dealii::Tensor<1, 3>>
+  interface_stiffness_response(const std::vector<dealii::types::global_dof_index>& dofs) const;
   void release_interface_stiffness();
   /// beta dt^2 / (1 - alpha_f), s^2.
   double interface_mass_factor(double dt) const;

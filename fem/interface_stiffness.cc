@@ -129,18 +129,19 @@ void FarFieldSolver::prepare_interface_stiffness(const double dt)
   d.interface_stiffness = s;
 }
 
-std::vector<Tensor<1, 3>>
-FarFieldSolver::interface_stiffness_column(const types::global_dof_index dof) const
+std::vector<Tensor<1, 3>> FarFieldSolver::interface_stiffness_response(
+  const std::vector<types::global_dof_index>& dofs) const
 {
   Data& d = *data;
   if (!d.interface_stiffness)
     throw std::logic_error("interface stiffness: prepare_interface_stiffness was not called");
   const InterfaceStiffnessData& s = *d.interface_stiffness;
-  // The unit displacement of `dof` (held), the rest of the body's answer, and the forces on
+  // The unit displacements of `dofs` (held), the rest of the body's answer, and the forces on
   // the interface rows.
   Data::Vector unit(d.owned_dofs, d.comm);
-  if (d.owned_dofs.is_element(dof))
-    unit(dof) = 1.0;
+  for (const types::global_dof_index dof : dofs)
+    if (d.owned_dofs.is_element(dof))
+      unit(dof) = 1.0;
   unit.compress(VectorOperation::insert);
   Data::Vector unit_ghosted(d.owned_dofs, d.relevant_dofs, d.comm);
   unit_ghosted = unit;

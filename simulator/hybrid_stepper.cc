@@ -63,10 +63,17 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
       << split.limit_max[1] << ", " << split.limit_max[2] << ") m, checked every "
       << split.hybrid.adaptive.check_interval << " MPM steps";
   if (solver.balances_windows())
-    o << "; implicit windows balanced (the far field's effective interface mass takes "
-      << 3 * solver.n_interface_nodes() << " far-field solves per window length)";
-  else if (solver.has_implicit_windows())
-    o << "; " << unbalanced_windows_warning();
+  {
+    const std::size_t n_dofs = 3 * solver.n_interface_nodes();
+    o << "; implicit windows balanced (the far field's effective interface mass takes ";
+    if (n_dofs <= solver.exact_balance_dofs())
+      o << n_dofs << " far-field solves per window length)";
+    else
+      o << "at most " << 3 * coupling::HybridSolver::probe_period *
+                             coupling::HybridSolver::probe_period *
+                             coupling::HybridSolver::probe_period
+        << " probing far-field solves per window length for its " << n_dofs << " dofs)";
+  }
   const mpm::RankGroup& ranks = solver.mpm().rank_group();
   if (ranks.distributed())
     o << " on each of " << ranks.size() << " MPI ranks (MPM zone in slabs along axis "
@@ -154,22 +161,9 @@ std::vector<std::string> HybridStepper::final_warnings() const
                        " far-field cells near failure or interface nodes moved too far lay at "
                        "or beyond the adaptive zone's reach at one check; widen Hybrid/Adaptive "
                        "zone reach");
-  if (solver.has_implicit_windows() && !solver.balances_windows())
-    warnings.push_back(unbalanced_windows_warning());
   const std::vector<std::string> mpm_warnings = mpm_final_warnings(solver.mpm());
   warnings.insert(warnings.end(), mpm_warnings.begin(), mpm_warnings.end());
   return warnings;
-}
-
-std::string HybridStepper::unbalanced_windows_warning() const
-{
-  return "*** the implicit far field's windows are not balanced: the interface has " +
-         std::to_string(3 * solver.n_interface_nodes()) + " dofs, more than the " +
-         std::to_string(coupling::HybridSolver::max_balanced_interface_dofs) +
-         " balanced windows take (one far-field solve each); the lagged momentum correction "
-         "is stable only for windows shorter than about a quarter of a wave's transit of the "
-         "interface cell (Hybrid/Substeps times Time/CFL below about 0.025); use Far "
-         "field/Integrator = central difference or a smaller zone";
 }
 
 nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const

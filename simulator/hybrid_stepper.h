@@ -59,9 +59,6 @@ public:
   }
 
 private:
-  /// Why an implicit far field's windows are not balanced here, and what to do.
-  std::string unbalanced_windows_warning() const;
-
   coupling::HybridSolver solver;
   std::size_t conversions_logged = 0;
   ProjectileStart projectile;

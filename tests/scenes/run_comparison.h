@@ -26,6 +26,8 @@ inline nlohmann::json summary_without_timing(const std::filesystem::path& run)
   if (s.contains("hybrid"))
     for (const char* key : {"mpm_seconds", "coupling_and_fe_seconds"})
       s["hybrid"].erase(key);
+  if (s.contains("hybrid") && s["hybrid"].contains("balance"))
+    s["hybrid"]["balance"].erase("effective_mass_seconds");
   if (s.contains("hybrid") && s["hybrid"].contains("adaptive_zone"))
     for (const char* key : {"check_seconds", "conversion_seconds"})
       s["hybrid"]["adaptive_zone"].erase(key);
