@@ -112,6 +112,32 @@ INSTANTIATE_TEST_SUITE_P(
     WindowCase{"newmark_10", fem::TimeIntegrator::newmark, 10, 0.1, 1e-3, 1e-10, 0.1}),
 
   [](const ::testing::TestParamInfo<WindowCase>& info) { return info.param.name; });
+/// A free block of edge L (cells h) whose cubic MPM zone spans zone_lo..zone_hi on every axis,
+/// Newmark windows of 10 MPM steps of CFL 0.1, struck by a velocity bump of width^2 `spread`
+/// centred at `blow`.
+std::unique_ptr<HybridSolver> balanced_block(const double h, const double L, const double zone_lo,
+                                             const double zone_hi, const mpm::Vector3& blow,
+                                             const double spread)
+{
+  mpm::SceneParameters s = block_scene({0, 0, 0}, {L, L, L}, h);
+  s.cfl = 0.1;
+  HybridParameters hybrid = zone({zone_lo, zone_lo, zone_lo}, {zone_hi, zone_hi, zone_hi},
+                                 CouplingScheme::multi_step);
+  hybrid.substeps = 10;
+  fem::FeSceneParameters far = uniform_far_field(h);
+  far.integrator = fem::TimeIntegrator::newmark;
+  far.time_step = 1.0;
+  HybridScene split = decompose(s, hybrid, far);
+  for (auto& face : split.fe.faces)
+    face.condition = fem::FaceParameters::Condition::free;
+  auto solver = std::make_unique<HybridSolver>(split, MPI_COMM_WORLD);
+  solver->set_initial_velocity([blow, spread](const mpm::Vector3& x) -> mpm::Vector3 {
+    const double bump = std::exp(-(x - blow).squaredNorm() / spread);
+    return mpm::Vector3(0.3 * bump, -0.2 * bump, 0.1 * bump);
+  });
+  return solver;
+}
+
 // Balanced windows saved in the middle of a window (a 24 mm block of 2 mm cells, so that 3
 // MPI ranks have their 4 cell layers each) (the far field's state at the window's
 // start, its step's impulses, the effective-mass matrix and the masses it was factored with
@@ -120,23 +146,7 @@ TEST(HybridWindowsRestart, ABalancedWindowSavedMidWayContinuesBitForBit)
 {
   const double h = 2e-3;
   auto build = [h]() {
-    mpm::SceneParameters s = block_scene({0, 0, 0}, {0.024, 0.024, 0.024}, h);
-    s.cfl = 0.1;
-    HybridParameters hybrid = zone({0.010, 0.010, 0.010}, {0.014, 0.014, 0.014},
-                                   CouplingScheme::multi_step);
-    hybrid.substeps = 10;
-    fem::FeSceneParameters far = uniform_far_field(h);
-    far.integrator = fem::TimeIntegrator::newmark;
-    far.time_step = 1.0;
-    HybridScene split = decompose(s, hybrid, far);
-    for (auto& face : split.fe.faces)
-      face.condition = fem::FaceParameters::Condition::free;
-    auto solver = std::make_unique<HybridSolver>(split, MPI_COMM_WORLD);
-    solver->set_initial_velocity([](const mpm::Vector3& x) -> mpm::Vector3 {
-      const double bump = std::exp(-(x - mpm::Vector3(0.010, 0.012, 0.012)).squaredNorm() / 16e-6);
-      return mpm::Vector3(0.3 * bump, -0.2 * bump, 0.1 * bump);
-    });
-    return solver;
+    return balanced_block(h, 0.024, 0.010, 0.014, mpm::Vector3(0.010, 0.012, 0.012), 16e-6);
   };
   std::unique_ptr<HybridSolver> uninterrupted = build();
   ASSERT_TRUE(uninterrupted->balances_windows());
@@ -174,23 +184,9 @@ TEST(HybridWindowsProbed, ProbedEffectiveMassMatchesTheExactOneAndBalancesAlike)
   const double h = 1e-3;
   const double L = 0.012, c0 = 0.5 * L;
   auto build = [&](const std::size_t exact_limit) {
-    mpm::SceneParameters s = block_scene({0, 0, 0}, {L, L, L}, h);
-    s.cfl = 0.1;
-    HybridParameters hybrid = zone({c0 - 0.003, c0 - 0.003, c0 - 0.003},
-                                   {c0 + 0.003, c0 + 0.003, c0 + 0.003}, CouplingScheme::multi_step);
-    hybrid.substeps = 10;
-    fem::FeSceneParameters far = uniform_far_field(h);
-    far.integrator = fem::TimeIntegrator::newmark;
-    far.time_step = 1.0;
-    HybridScene split = decompose(s, hybrid, far);
-    for (auto& face : split.fe.faces)
-      face.condition = fem::FaceParameters::Condition::free;
-    auto solver = std::make_unique<HybridSolver>(split, MPI_COMM_WORLD);
+    auto solver =
+      balanced_block(h, L, c0 - 0.003, c0 + 0.003, mpm::Vector3(c0 - 0.003, c0, c0), 4e-6);
     solver->set_exact_balance_dofs(exact_limit);
-    solver->set_initial_velocity([c0](const mpm::Vector3& x) -> mpm::Vector3 {
-      const double bump = std::exp(-(x - mpm::Vector3(c0 - 0.003, c0, c0)).squaredNorm() / 4e-6);
-      return mpm::Vector3(0.3 * bump, -0.2 * bump, 0.1 * bump);
-    });
     return solver;
   };
   std::unique_ptr<HybridSolver> exact = build(100000), probed = build(0);
