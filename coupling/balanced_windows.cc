@@ -6,7 +6,6 @@
 
 #include <array>
 #include <chrono>
-#include <cstdlib>
 #include <stdexcept>
 #include <unordered_map>
 #include <cmath>
@@ -172,19 +171,16 @@ void HybridSolver::build_balance_matrix(const double window)
             interface_response(dofs, probe, factor, response);
             for (std::size_t k = 0; k < keys.size(); ++k)
             {
-              // The probed node nearest k: the offset of the wanted residue within the reach.
+              // The probed node nearest k: per axis the wanted residue's offset, taken in
+              // [-probe_reach, probe_reach] (probe_period = 2 probe_reach + 1).
               std::array<int, 3> at = ijk[k];
-              bool within = true;
               for (int d = 0; d < 3; ++d)
               {
-                int offset = residue(wanted[d] - ijk[k][d]);
-                if (offset > probe_reach)
-                  offset -= probe_period;
-                within = within && std::abs(offset) <= probe_reach;
-                at[d] += offset;
+                const int offset = residue(wanted[d] - ijk[k][d]);
+                at[d] += offset > probe_reach ? offset - probe_period : offset;
               }
               const auto found = index_of_key.find(grid.node_key(at[0], at[1], at[2]));
-              if (!within || found == index_of_key.end() || free[found->second][c] == 0.0)
+              if (found == index_of_key.end() || free[found->second][c] == 0.0)
                 continue;
               for (unsigned int ci = 0; ci < 3; ++ci)
                 if (response[3 * k + ci] != 0.0)

@@ -120,6 +120,7 @@ public:
   /// response within 2 nodes of a probed dof is that dof's alone.
   static constexpr int probe_period = 5;
   static constexpr int probe_reach = 2;
+  static_assert(probe_period == 2 * probe_reach + 1);
 
   // --- adaptive zone (coupling/adaptive_zone.cc) -----------------------------------------
   /// The zone now (it grows with the adaptive zone), m.
