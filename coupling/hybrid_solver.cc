@@ -148,6 +148,16 @@ void HybridSolver::advance()
     double window = fe_solver->next_time_step();
     if (split.hybrid.substeps > 0)
       window = std::min(window, split.hybrid.substeps * mpm_solver->stable_time_step());
+    // Balanced implicit windows stay within one wave transit of the far field's smallest
+    // cell: beyond it the interface gains energy (docs/far_field.md, section 1).
+    if (has_implicit_windows())
+      if (const double limit = fe_solver->shortest_wave_transit(); window > limit)
+      {
+        window = limit;
+        ++book.windows_shortened;
+        if (book.shortest_window_limit == 0.0 || limit < book.shortest_window_limit)
+          book.shortest_window_limit = limit;
+      }
     // The adaptive zone looks at the far field at window ends: no window may outlast a check.
     if (adaptive.enabled)
       window = std::min(window, adaptive.check_interval * mpm_solver->stable_time_step());

@@ -31,6 +31,10 @@ struct InterfaceLedger
   double largest_balance_residual = 0.0;
   unsigned long balance_matrices = 0;
   double balance_matrix_seconds = 0.0;
+  /// Implicit windows shortened to one wave transit of the far field's smallest cell (the
+  /// deck asked for longer ones), and the shortest such limit met, s.
+  unsigned long windows_shortened = 0;
+  double shortest_window_limit = 0.0;
   unsigned long mpm_steps = 0;
 
   /// Work done by MPM minus work received by FE (the interface energy error), J.

@@ -50,7 +50,9 @@ void declare_hybrid_section(EntryTable& table)
                 "Far field/Time step when implicit).");
   table.declare("Substeps", "0", Patterns::Integer(0, 100000),
                 "Multi step: at most this many MPM substeps per FE step (0: no limit; the FE "
-                "step is then its own stable or deck step).");
+                "step is then its own stable or deck step). An implicit far field's step is "
+                "also kept within one wave transit of its smallest cell, beyond which the "
+                "interface gains energy.");
   table.declare("Stop when FE points fail", "true", Patterns::Bool(),
                 "true: the run stops when a far-field quadrature point fails (the wound has "
                 "reached the FE region, whose answer is then not the MPM zone's); false: it "

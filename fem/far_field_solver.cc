@@ -411,18 +411,24 @@ double FarFieldSolver::next_time_step() const
   const Data& d = *data;
   if (d.is_implicit())
     return d.prm.time_step;
-  double dt = std::numeric_limits<double>::max();
+  const double transit = shortest_wave_transit();
+  AssertThrow(std::isfinite(transit),
+              ExcMessage("FE: no positive wave speed in the mesh; cannot choose a time step"));
+  return d.prm.cfl * transit;
+}
+
+double FarFieldSolver::shortest_wave_transit() const
+{
+  const Data& d = *data;
+  double transit = std::numeric_limits<double>::infinity();
   for (const auto& cell : d.triangulation.active_cell_iterators())
     if (d.owns_live(cell))
     {
       const unsigned int k = cell->active_cell_index();
       if (d.cell_wave_speed[k] > 0.0)
-        dt = std::min(dt, d.cell_size[k] / d.cell_wave_speed[k]);
+        transit = std::min(transit, d.cell_size[k] / d.cell_wave_speed[k]);
     }
-  dt = Utilities::MPI::min(dt, d.comm);
-  AssertThrow(dt < std::numeric_limits<double>::max(),
-              ExcMessage("FE: no positive wave speed in the mesh; cannot choose a time step"));
-  return d.prm.cfl * dt;
+  return Utilities::MPI::min(transit, d.comm);
 }
 
 void FarFieldSolver::advance(const double dt)

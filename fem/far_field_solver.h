@@ -147,6 +147,9 @@ public:
 
   /// Explicit: the stable step of the current state (cfl * h / c). Implicit: the deck step.
   double next_time_step() const;
+  /// The shortest time a wave takes to cross a cell at the current state, min h / c over the
+  /// live cells (all ranks), s; infinity when no cell has a positive wave speed.
+  double shortest_wave_transit() const;
   /// Advances by dt with the configured integrator. Throws std::runtime_error when an
   /// element inverts or Newton does not converge (the state is then unchanged).
   void advance(double dt);

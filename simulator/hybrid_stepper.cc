@@ -73,6 +73,8 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
                              coupling::HybridSolver::probe_period *
                              coupling::HybridSolver::probe_period
         << " probing far-field solves per window length for its " << n_dofs << " dofs)";
+    o << ", each window at most one wave transit of the far field's smallest cell ("
+      << solver.fe().shortest_wave_transit() << " s now)";
   }
   const mpm::RankGroup& ranks = solver.mpm().rank_group();
   if (ranks.distributed())
@@ -214,7 +216,9 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                                     {"unconverged_windows", ledger.balance_unconverged_windows},
                                     {"largest_residual_left", ledger.largest_balance_residual},
                                     {"effective_mass_matrices", ledger.balance_matrices},
-                                    {"effective_mass_seconds", ledger.balance_matrix_seconds}};
+                                    {"effective_mass_seconds", ledger.balance_matrix_seconds},
+                                    {"windows_shortened_to_one_transit", ledger.windows_shortened},
+                                    {"shortest_window_limit_s", ledger.shortest_window_limit}};
   summary["hybrid"]["monitors"] = monitors.summary();
   summary["hybrid"]["zone_min_m"] = solver.zone_min();
   summary["hybrid"]["zone_max_m"] = solver.zone_max();
@@ -262,6 +266,10 @@ std::string HybridStepper::final_report(const nlohmann::json& summary) const
     << summary["wall_seconds"].get<double>() << " s wall (MPM "
     << summary["hybrid"]["mpm_seconds"].get<double>() << " s, FE and coupling "
     << mpm_side.phase_times().coupling << " s";
+  if (ledger.windows_shortened > 0)
+    o << ", " << ledger.windows_shortened
+      << " implicit windows shortened to one wave transit of the far field's smallest cell ("
+      << ledger.shortest_window_limit << " s at the shortest)";
   if (solver.scene().hybrid.adaptive.enabled)
     o << ", adaptive zone: " << solver.conversions().size() << " conversions "
       << solver.zone_conversion_seconds() << " s, checks " << solver.zone_check_seconds() << " s";
