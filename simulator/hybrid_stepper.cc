@@ -7,6 +7,7 @@
 
 #include <omp.h>
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -200,6 +201,7 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                        {"fe_integrator", integrator_name(split.fe.integrator)},
                        {"mpm_steps", ledger.mpm_steps},
                        {"fe_steps", ledger.fe_steps},
+                       {"fe_time_s", solver.fe().time()},
                        {"interface_nodes", solver.n_interface_nodes()},
                        {"interface_nodes_across_ranks", solver.n_interface_nodes_across_ranks()},
                        {"fe_dofs", solver.fe().n_dofs()},
@@ -270,6 +272,11 @@ std::string HybridStepper::final_report(const nlohmann::json& summary) const
     o << ", " << ledger.windows_shortened
       << " implicit windows shortened to one wave transit of the far field's smallest cell ("
       << ledger.shortest_window_limit << " s at the shortest)";
+  // A window steps the far field to its end first: a run that stops inside one leaves the
+  // far field's state (mesh output, supports, energies) at the window's end.
+  if (std::abs(solver.fe().time() - solver.time()) > 1e-9 * solver.time())
+    o << "; the run stopped inside a coupling window: the far field stands at t = "
+      << solver.fe().time() << " s";
   if (solver.scene().hybrid.adaptive.enabled)
     o << ", adaptive zone: " << solver.conversions().size() << " conversions "
       << solver.zone_conversion_seconds() << " s, checks " << solver.zone_check_seconds() << " s";
