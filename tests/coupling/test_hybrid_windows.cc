@@ -3,7 +3,8 @@
 // at its own stable step (explicit). Momentum must be exchanged exactly at every window end
 // (round-off, counting the impulse the next window takes back) and the energy must stay
 // bounded. Balanced windows stay stable up to about a wave's transit of the interface cell;
-// at two transits the energy grows by 40 % over 2 ms, at five it diverges (docs/far_field.md).
+// at two transits the energy grew by 40 % over 2 ms, at five it diverged (docs/far_field.md),
+// so the solver shortens longer windows to one transit.
 #include "coupling/hybrid_solver.h"
 #include "hybrid_test_scenes.h"
 
