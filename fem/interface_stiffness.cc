@@ -169,7 +169,10 @@ std::vector<Tensor<1, 3>> FarFieldSolver::interface_stiffness_response(
   const double norm = rhs.l2_norm();
   if (norm > 0.0)
   {
-    SolverControl control(d.prm.max_linear_iterations, 1e-12 * norm);
+    // The matrix only steers the balance's chord iteration, which closes each window to its
+    // own tolerance, and probing already leaves 0.4 % out: 1e-6 is ample (1e-12 cost 1.7
+    // times as much on the paper deck and gave the same failed points).
+    SolverControl control(d.prm.max_linear_iterations, 1e-6 * norm);
     TrilinosWrappers::SolverCG solver(control);
     solver.solve(s.matrix, answer, rhs, s.preconditioner);
   }
