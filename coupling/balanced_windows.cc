@@ -13,14 +13,12 @@
 
 namespace vulnus::coupling
 {
-bool HybridSolver::has_implicit_windows() const
+bool HybridSolver::balances_windows() const
 {
   return split.hybrid.scheme == CouplingScheme::multi_step &&
          (split.fe.integrator == fem::TimeIntegrator::newmark ||
           split.fe.integrator == fem::TimeIntegrator::generalized_alpha);
 }
-
-bool HybridSolver::balances_windows() const { return has_implicit_windows(); }
 
 void HybridSolver::exchange_balanced(const double time, const double dt, const bool first_substep,
                                      const bool last_substep, const mpm::SharedNodeState& mpm_side,
@@ -146,14 +144,16 @@ void HybridSolver::build_balance_matrix(const double window)
     // within a few cells while a window lasts about a wave's transit of one), what lies
     // farther is dropped.
     const mpm::Grid& grid = mpm_solver->background_grid();
+    auto residue = [](const int i) { return ((i % probe_period) + probe_period) % probe_period; };
     std::unordered_map<std::int64_t, std::size_t> index_of_key;
-    std::vector<std::array<int, 3>> ijk(keys.size());
+    std::vector<std::array<int, 3>> ijk(keys.size()), residues(keys.size());
     for (std::size_t k = 0; k < keys.size(); ++k)
     {
       index_of_key.emplace(keys[k], k);
       ijk[k] = grid.node_ijk(keys[k]);
+      for (int d = 0; d < 3; ++d)
+        residues[k][d] = residue(ijk[k][d]);
     }
-    auto residue = [](const int i) { return ((i % probe_period) + probe_period) % probe_period; };
     std::vector<std::size_t> probe;
     for (int r0 = 0; r0 < probe_period; ++r0)
       for (int r1 = 0; r1 < probe_period; ++r1)
@@ -163,8 +163,7 @@ void HybridSolver::build_balance_matrix(const double window)
             const std::array<int, 3> wanted = {r0, r1, r2};
             probe.clear();
             for (std::size_t k = 0; k < keys.size(); ++k)
-              if (free[k][c] != 0.0 && residue(ijk[k][0]) == r0 && residue(ijk[k][1]) == r1 &&
-                  residue(ijk[k][2]) == r2)
+              if (free[k][c] != 0.0 && residues[k] == wanted)
                 probe.push_back(3 * k + c);
             if (probe.empty())
               continue;

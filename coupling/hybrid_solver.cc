@@ -150,7 +150,7 @@ void HybridSolver::advance()
       window = std::min(window, split.hybrid.substeps * mpm_solver->stable_time_step());
     // Balanced implicit windows stay within one wave transit of the far field's smallest
     // cell: beyond it the interface gains energy (docs/far_field.md, section 1).
-    if (has_implicit_windows())
+    if (balances_windows())
       if (const double limit = fe_solver->shortest_wave_transit(); window > limit)
       {
         window = limit;

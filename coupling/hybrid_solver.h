@@ -104,10 +104,8 @@ public:
   bool at_window_end() const { return !window_open; }
   /// Kinetic + strain energy of the FE side, J.
   double fe_mechanical_energy() const;
-  /// Multi-step windows of an implicit far field.
-  bool has_implicit_windows() const;
-  /// Whether they balance their momentum within the window (coupling/balanced_windows.cc):
-  /// always for implicit windows.
+  /// Multi-step windows of an implicit far field, which balance their momentum within the
+  /// window (coupling/balanced_windows.cc).
   bool balances_windows() const;
   /// Up to this many interface dofs (default 750) the far field's effective interface mass
   /// takes one far-field solve per dof (exact); beyond, it is probed (3 x 5^3 = 375 solves,
