@@ -2,6 +2,7 @@
 // (plain HDF5 C API and nlohmann::json; no deal.II).
 #include "analysis/compare_runs.h"
 
+#include "analysis/slice_profiles.h"
 #include "io/hdf5_handle.h"
 
 #include <hdf5.h>
@@ -162,6 +163,52 @@ void compare_summaries(const nlohmann::json& a, const nlohmann::json& b, std::os
   print_table(rows, out);
   out << keys.size() << " numbers: " << n_differ << " differ, " << n_one_sided
       << " in one run only\n";
+}
+
+/// A numeric array of `summary[section][key]`, or nothing when it is missing or not numeric.
+std::optional<std::vector<double>> numbers(const nlohmann::json& summary, const char* section,
+                                           const char* key)
+{
+  if (!summary.contains(section) || !summary[section].contains(key) ||
+      !summary[section][key].is_array())
+    return std::nullopt;
+  std::vector<double> values;
+  for (const auto& value : summary[section][key])
+  {
+    if (!value.is_number())
+      return std::nullopt;
+    values.push_back(value.get<double>());
+  }
+  return values;
+}
+
+/// Runs at different cell sizes slice their tract differently (one cell per slice): B's tract
+/// areas are then averaged over A's slices, so that tract.area_m2[i] compares the same depths.
+void align_tract_slices(const nlohmann::json& a, nlohmann::json& b, std::ostream& out)
+{
+  const auto depth_a = numbers(a, "tract", "depth_m"), depth_b = numbers(b, "tract", "depth_m");
+  const auto area_b = numbers(b, "tract", "area_m2");
+  if (!depth_a || !depth_b || !area_b || depth_a->empty() || depth_b->empty() ||
+      same_slices(*depth_a, *depth_b) || area_b->size() != depth_b->size())
+    return;
+  const auto rebinned = rebin_slices(*depth_b, *area_b, *depth_a);
+  nlohmann::json areas = nlohmann::json::array(), depths = nlohmann::json::array();
+  for (std::size_t i = 0; i < rebinned.size(); ++i)
+  {
+    areas.push_back(rebinned[i] ? nlohmann::json(*rebinned[i]) : nlohmann::json());
+    depths.push_back(rebinned[i] ? nlohmann::json((*depth_a)[i]) : nlohmann::json());
+  }
+  b["tract"]["area_m2"] = areas;
+  b["tract"]["depth_m"] = depths;
+  const auto slicing = [](const std::vector<double>& depth)
+  {
+    return std::to_string(depth.size()) + " slices of " +
+           format_number(1e3 * (depth.size() > 1 ? depth[1] - depth[0] : 2.0 * depth[0]), 4) +
+           " mm";
+  };
+  out << "note: the runs slice the tract differently (A: " << slicing(*depth_a)
+      << ", B: " << slicing(*depth_b)
+      << "); B's tract.area_m2 below is its profile averaged over A's slices\n\n";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -414,7 +461,8 @@ int compare_runs(const std::string& run_a, const std::string& run_b, std::ostrea
   {
     check_directory(run_a);
     check_directory(run_b);
-    const nlohmann::json summary_a = read_summary(run_a), summary_b = read_summary(run_b);
+    const nlohmann::json summary_a = read_summary(run_a);
+    nlohmann::json summary_b = read_summary(run_b);
     const std::optional<fs::path> file_a = last_particle_file(run_a),
                                   file_b = last_particle_file(run_b);
     // Read everything before printing, so an unreadable file gives only the error.
@@ -426,6 +474,7 @@ int compare_runs(const std::string& run_a, const std::string& run_b, std::ostrea
     }
 
     out << "A: " << run_a << "\nB: " << run_b << "\n\n";
+    align_tract_slices(summary_a, summary_b, out);
     compare_summaries(summary_a, summary_b, out);
     if (points_a && points_b)
       compare_failure(*points_a, *points_b, out);

@@ -11,7 +11,9 @@ namespace vulnus::analysis
 /// Compares the run directories `run_a` and `run_b` and prints the result to `out`.
 ///
 /// Summary: each number (and boolean, as 0/1) of summary.json, keyed by its path
-/// (`energy.kinetic_J`, `tract.area_m2[3]`), with A, B, B - A and (B - A) / |A|.
+/// (`energy.kinetic_J`, `tract.area_m2[3]`), with A, B, B - A and (B - A) / |A|. When the two
+/// runs slice the tract differently (one cell per slice, so at different cell sizes), B's
+/// tract areas are first averaged over A's slices, with a note saying so.
 ///
 /// Failure fields: the last particles_NNNNN.h5 of each run; points are shared when their
 /// reference positions agree within 1e-7 m (and their material ids, where both files have

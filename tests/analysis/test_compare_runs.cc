@@ -2,12 +2,14 @@
 // (summary differences, shared points matched by reference position, the 4 x 4 flag table),
 // and missing or unreadable inputs.
 #include "analysis/compare_runs.h"
+#include "analysis/slice_profiles.h"
 
 #include "synthetic_run.h"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <stdexcept>
 
 namespace
 {
@@ -143,6 +145,65 @@ TEST(CompareRuns, PerturbedCopyShowsTheDifferences)
                                                        {"total", "0", "1", "0", "1"}};
   for (const auto& line : expected)
     EXPECT_EQ(row(result.out, line[0]), line) << result.out;
+}
+
+TEST(SliceProfiles, RebinningTakesOverlapWeightedMeans)
+{
+  using vulnus::analysis::rebin_slices;
+  // 1 mm slices [0, 1], [1, 2] onto 1.5 mm slices [0, 1.5], [1.5, 3]: the first takes 1 mm of
+  // the value 1 and 0.5 mm of 3; the second is not covered whole.
+  const auto coarser = rebin_slices({0.5e-3, 1.5e-3}, {1.0, 3.0}, {0.75e-3, 2.25e-3});
+  ASSERT_EQ(coarser.size(), 2u);
+  ASSERT_TRUE(coarser[0].has_value());
+  EXPECT_NEAR(*coarser[0], (1.0 * 1.0 + 0.5 * 3.0) / 1.5, 1e-12);
+  EXPECT_FALSE(coarser[1].has_value());
+  // Onto finer slices: each takes the value of the slice it lies in.
+  const auto finer = rebin_slices({0.5e-3, 1.5e-3}, {1.0, 3.0}, {0.25e-3, 0.75e-3, 1.25e-3});
+  ASSERT_EQ(finer.size(), 3u);
+  EXPECT_DOUBLE_EQ(finer[0].value(), 1.0);
+  EXPECT_DOUBLE_EQ(finer[1].value(), 1.0);
+  EXPECT_DOUBLE_EQ(finer[2].value(), 3.0);
+  EXPECT_TRUE(vulnus::analysis::same_slices({0.5e-3, 1.5e-3}, {0.5e-3, 1.5e-3 + 1e-15}));
+  EXPECT_FALSE(vulnus::analysis::same_slices({0.5e-3, 1.5e-3}, {0.25e-3, 0.75e-3}));
+  EXPECT_THROW(rebin_slices({0.5e-3}, {1.0, 2.0}, {0.5e-3}), std::invalid_argument);
+}
+
+TEST(CompareRuns, TractsSlicedAtOtherCellSizesCompareDepthForDepth)
+{
+  const Scratch scratch;
+  const auto coarse = scratch.make("coarse"), fine = scratch.make("fine"),
+             longer = scratch.make("longer");
+  write_summary(coarse, {{"tract", {{"depth_m", {5e-4, 1.5e-3}}, {"area_m2", {2e-5, 4e-5}}}}});
+  // Half-thickness slices whose pairs average to the coarse run's areas, and one slice more.
+  write_summary(fine, {{"tract",
+                        {{"depth_m", {2.5e-4, 7.5e-4, 1.25e-3, 1.75e-3, 2.25e-3}},
+                         {"area_m2", {1e-5, 3e-5, 3.5e-5, 4.5e-5, 9e-5}}}}});
+  write_summary(
+      longer, {{"tract", {{"depth_m", {5e-4, 1.5e-3, 2.5e-3}}, {"area_m2", {2e-5, 4e-5, 5e-5}}}}});
+  Result result = compare(coarse, fine);
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "(A: 2 slices of 1 mm, B: 5 slices of 0.5 mm)")) << result.out;
+  for (const char* key : {"tract.area_m2[0]", "tract.area_m2[1]", "tract.depth_m[1]"})
+    EXPECT_EQ(row(result.out, key).at(4), "0") << key << "\n" << result.out;
+  EXPECT_TRUE(contains(result.out, "4 numbers: 0 differ, 0 in one run only")) << result.out;
+
+  // A deeper than B: the slice B covers only half of has no value of B's.
+  result = compare(longer, fine);
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_EQ(row(result.out, "tract.area_m2[1]").at(4), "0") << result.out;
+  const auto beyond = row(result.out, "tract.area_m2[2]");
+  ASSERT_GE(beyond.size(), 4u) << result.out;
+  EXPECT_EQ(beyond[2], "-") << result.out;
+  EXPECT_EQ(beyond[3], "only") << result.out;
+  // B against A: B's five slices take the coarse values, the last one none.
+  result = compare(fine, coarse);
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_EQ(row(result.out, "tract.area_m2[2]").at(2), "4e-05") << result.out;
+  EXPECT_EQ(row(result.out, "tract.area_m2[4]").at(3), "only") << result.out;
+
+  // Same slicing: nothing is re-binned and no note is printed.
+  result = compare(coarse, coarse);
+  EXPECT_FALSE(contains(result.out, "note:")) << result.out;
 }
 
 TEST(CompareRuns, WithoutParticleFilesComparesSummariesOnly)
