@@ -203,8 +203,7 @@ void align_tract_slices(const nlohmann::json& a, nlohmann::json& b, std::ostream
   const auto slicing = [](const std::vector<double>& depth)
   {
     return std::to_string(depth.size()) + " slices of " +
-           format_number(1e3 * (depth.size() > 1 ? depth[1] - depth[0] : 2.0 * depth[0]), 4) +
-           " mm";
+           format_number(1e3 * slice_thickness(depth), 4) + " mm";
   };
   out << "note: the runs slice the tract differently (A: " << slicing(*depth_a)
       << ", B: " << slicing(*depth_b)

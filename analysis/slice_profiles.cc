@@ -7,13 +7,10 @@
 
 namespace vulnus::analysis
 {
-namespace
-{
-double thickness(const std::vector<double>& centres)
+double slice_thickness(const std::vector<double>& centres)
 {
   return centres.size() > 1 ? centres[1] - centres[0] : 2.0 * centres.front();
 }
-} // namespace
 
 std::vector<std::optional<double>> rebin_slices(const std::vector<double>& from_depth,
                                                 const std::vector<double>& from_value,
@@ -24,7 +21,8 @@ std::vector<std::optional<double>> rebin_slices(const std::vector<double>& from_
   std::vector<std::optional<double>> result(to_depth.size());
   if (from_depth.empty() || to_depth.empty())
     return result;
-  const double from_half = 0.5 * thickness(from_depth), to_half = 0.5 * thickness(to_depth);
+  const double from_half = 0.5 * slice_thickness(from_depth),
+               to_half = 0.5 * slice_thickness(to_depth);
   for (std::size_t i = 0; i < to_depth.size(); ++i)
   {
     double weighted = 0.0, covered = 0.0;
@@ -50,7 +48,7 @@ bool same_slices(const std::vector<double>& a, const std::vector<double>& b)
     return false;
   if (a.empty())
     return true;
-  const double scale = std::max(std::abs(thickness(a)), std::abs(thickness(b)));
+  const double scale = std::max(std::abs(slice_thickness(a)), std::abs(slice_thickness(b)));
   for (std::size_t i = 0; i < a.size(); ++i)
     if (std::abs(a[i] - b[i]) > 1e-9 * scale)
       return false;

@@ -16,6 +16,10 @@ std::vector<std::optional<double>> rebin_slices(const std::vector<double>& from_
                                                 const std::vector<double>& from_value,
                                                 const std::vector<double>& to_depth);
 
+/// The thickness of contiguous slices centred at `centres` (their spacing; twice the centre
+/// for a single slice).
+double slice_thickness(const std::vector<double>& centres);
+
 /// True when the two sets of slice centres are the same within 1e-9 of the larger spacing.
 bool same_slices(const std::vector<double>& a, const std::vector<double>& b);
 } // namespace vulnus::analysis
