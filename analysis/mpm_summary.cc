@@ -7,12 +7,12 @@
 
 namespace vulnus::analysis
 {
-std::string projectile_fate(const mpm::ProjectileExit& exit, const double velocity_now,
-                            const double initial_speed)
+std::string projectile_fate(const mpm::ProjectileExit& exit, const bool through_exit_face,
+                            const double velocity_now, const double initial_speed)
 {
   if (exit.recorded)
-    return exit.past_exit_plane ? "left the target through its far side"
-                                : "left the target obliquely, sideways or backwards";
+    return through_exit_face ? "left the target through its far side"
+                             : "left the target sideways or backwards";
   if (velocity_now < -0.01 * initial_speed)
     return "moving backwards inside the target";
   if (velocity_now <= 0.01 * initial_speed)
@@ -27,11 +27,15 @@ const char* face_condition_name(const mpm::FaceCondition c)
   return c == mpm::FaceCondition::fixed ? "fixed" : c == mpm::FaceCondition::roller ? "roller" : "free";
 }
 
-/// A wound of fewer than three points has no shape: aspect ratio and axis are null.
+/// A wound of fewer than three points has no shape: aspect ratio and axis are null. A face
+/// the path does not cross (or an exit the projectile did not make) has no wound: null.
 nlohmann::json face_json(const FaceWound& w)
 {
+  if (w.face < 0)
+    return nlohmann::json();
   const bool has_shape = w.n_points >= 3;
-  return {{"equivalent_diameter_m", w.equivalent_diameter},
+  return {{"face", box_face_name(w.face)},
+          {"equivalent_diameter_m", w.equivalent_diameter},
           {"aspect_ratio", has_shape ? nlohmann::json(w.aspect_ratio) : nlohmann::json()},
           {"major_axis_direction",
            has_shape ? nlohmann::json{w.major_axis[0], w.major_axis[1], w.major_axis[2]}
@@ -45,6 +49,26 @@ double accounted_energy(const mpm::Solver& solver, const mpm::SceneDiagnostics& 
 {
   return d.kinetic_energy + d.strain_energy + d.potential_energy + d.dissipated_energy +
          solver.contact_dissipation() + solver.removed_energy();
+}
+
+MomentumAudit mpm_momentum_audit(const mpm::Solver& solver, const mpm::SceneDiagnostics& d,
+                                 const std::array<mpm::Vector3, 6>& supports)
+{
+  MomentumAudit audit;
+  audit.initial = solver.initial_momentum();
+  audit.now = d.momentum;
+  audit.removed = solver.removed_momentum();
+  audit.external = solver.external_impulse();
+  audit.added = solver.added_momentum();
+  double support_magnitudes = 0.0;
+  for (const mpm::Vector3& j : supports)
+  {
+    audit.supports += j;
+    support_magnitudes += j.norm();
+  }
+  audit.scale = std::max({audit.initial.norm(), support_magnitudes, audit.external.norm(),
+                          audit.added.norm()});
+  return audit;
 }
 
 nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
@@ -71,7 +95,10 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
   j["failed_volume_m3"] = {{"matrix", wound.volumes[1]}, {"fiber", wound.volumes[2]}, {"total", wound.volumes[3]}};
   j["entrance_wound"] = face_json(wound.entrance);
   j["exit_wound"] = face_json(wound.exit);
-  j["tract"] = {{"depth_m", wound.tract_depth}, {"area_m2", wound.tract_area}};
+  j["tract"] = {{"depth_m", wound.tract_depth},
+                {"area_m2", wound.tract_area},
+                {"path_length_m", wound.path.length()},
+                {"direction", {axis[0], axis[1], axis[2]}}};
 
   nlohmann::json bullet = nlohmann::json::object();
   if (projectile >= 0)
@@ -83,10 +110,12 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
     const double kinetic = exit.recorded ? exit.kinetic_energy : b.kinetic_energy;
     bullet["initial_velocity_m_s"] = totals.projectile_initial_speed;
     bullet["exited"] = exit.recorded;
+    // Exit fields only for an exit that happened (null otherwise); the speed now always.
     bullet["exit_time_s"] = exit.recorded ? nlohmann::json(exit.time) : nlohmann::json();
-    bullet["exit_velocity_m_s"] = speed;
+    bullet["exit_velocity_m_s"] = exit.recorded ? nlohmann::json(speed) : nlohmann::json();
     bullet["velocity_now_m_s"] = b.velocity.dot(axis);
-    bullet["fate"] = projectile_fate(exit, b.velocity.dot(axis), totals.projectile_initial_speed);
+    bullet["fate"] = projectile_fate(exit, left_through_exit_face(sample, solver),
+                                     b.velocity.dot(axis), totals.projectile_initial_speed);
     bullet["kinetic_energy_lost_J"] = totals.projectile_initial_kinetic_energy - kinetic;
     bullet["max_von_mises_over_yield"] = solver.peak_von_mises_over_yield()[projectile];
     bullet["position_m"] = {b.centroid[0], b.centroid[1], b.centroid[2]};
@@ -129,6 +158,7 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
                  {"outflow_J", solver.removed_energy()},
                  {"balance_error", relative_balance_error(accounted_energy(solver, d), initial)}};
   j["removed_points"] = solver.removed_points();
+  j["momentum_audit"] = momentum_audit_json(mpm_momentum_audit(solver, d, supports));
   j["warnings"] = totals.warnings;
   return j;
 }

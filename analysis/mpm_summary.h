@@ -2,6 +2,7 @@
 // kinematics and the energy budget (keys listed in the wound-analysis issue and the README).
 #pragma once
 
+#include "analysis/momentum_audit.h"
 #include "analysis/wound_sample.h"
 #include "mpm/solver.h"
 
@@ -39,11 +40,16 @@ inline double relative_balance_error(const double energy, const double initial)
 /// (collect_wound_sample, complete on rank 0), `d`: the diagnostics over all ranks,
 /// `supports`: Solver::support_impulses (collective, so taken by the caller on every rank).
 /// What became of the projectile, in words (summary "fate"): left the target through its far
-/// side, left it obliquely, sideways or backwards (clear of it before its tail passed the
-/// plane through its far corner), stopped in it (|v| <= 1 % of the initial speed along
-/// the flight), moving backwards inside it, or still inside it.
-std::string projectile_fate(const mpm::ProjectileExit& exit, double velocity_now,
-                            double initial_speed);
+/// side (the exit face of its path, `through_exit_face`), left it sideways or backwards,
+/// stopped in it (|v| <= 1 % of the initial speed along the flight), moving backwards inside
+/// it, or still inside it.
+std::string projectile_fate(const mpm::ProjectileExit& exit, bool through_exit_face,
+                            double velocity_now, double initial_speed);
+
+/// The MPM side's momentum audit: its bodies, what left its grid, its faces' supports,
+/// gravity and rigid drivers, and points added from elsewhere (the hybrid adds the far field).
+MomentumAudit mpm_momentum_audit(const mpm::Solver& solver, const mpm::SceneDiagnostics& d,
+                                 const std::array<mpm::Vector3, 6>& supports);
 
 nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
                            const WoundSample& sample, const mpm::SceneDiagnostics& d,

@@ -1,49 +1,101 @@
-// Wound metrics from failed points: volumes, face wounds, tract profile.
+// Wound metrics from failed points: volumes, the wounds of the faces the path crosses, the
+// tract profile along the path.
 #include "analysis/wound_metrics.h"
 
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
+#include <limits>
 
 namespace vulnus::analysis
 {
+const char* box_face_name(const int face)
+{
+  static const char* const names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+  return face >= 0 && face < 6 ? names[face] : "none";
+}
+
+PathThroughBox path_through_box(const Vector3& lower, const Vector3& upper, const Vector3& origin,
+                                const Vector3& direction)
+{
+  // Slab method: the path is inside the box between the last entry into and the first exit
+  // from the three pairs of parallel planes.
+  PathThroughBox path;
+  double t_in = -std::numeric_limits<double>::infinity();
+  double t_out = std::numeric_limits<double>::infinity();
+  for (int d = 0; d < 3; ++d)
+  {
+    if (std::abs(direction[d]) < 1e-12)
+    {
+      if (origin[d] < lower[d] || origin[d] > upper[d])
+        return path;
+      continue;
+    }
+    const bool forward = direction[d] > 0.0;
+    const double t_lower = (lower[d] - origin[d]) / direction[d];
+    const double t_upper = (upper[d] - origin[d]) / direction[d];
+    const double enter = forward ? t_lower : t_upper, leave = forward ? t_upper : t_lower;
+    if (enter > t_in)
+    {
+      t_in = enter;
+      path.entrance_face = 2 * d + (forward ? 0 : 1);
+    }
+    if (leave < t_out)
+    {
+      t_out = leave;
+      path.exit_face = 2 * d + (forward ? 1 : 0);
+    }
+  }
+  if (!(t_in < t_out) || path.entrance_face < 0 || path.exit_face < 0)
+    return PathThroughBox();
+  path.hits = true;
+  path.t_in = t_in;
+  path.t_out = t_out;
+  return path;
+}
+
 namespace
 {
+/// Totally failed points within one cell inside `face` of the box.
 FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& volume,
-                     const std::vector<std::uint8_t>& flags, const Vector3& axis,
-                     const double plane, const double inward, const double cell_size)
+                     const std::vector<std::uint8_t>& flags, const WoundGeometry& g, const int face)
 {
   FaceWound w;
+  w.face = face;
+  const int axis_index = face / 2;
+  const bool lower_face = face % 2 == 0;
+  const double plane = lower_face ? g.box_lower[axis_index] : g.box_upper[axis_index];
+  const double inward = lower_face ? 1.0 : -1.0;
+  auto in_layer = [&](const std::size_t p) {
+    const double depth = inward * (x[p][axis_index] - plane);
+    return flags[p] == 3 && depth >= 0.0 && depth <= g.cell_size;
+  };
   double total = 0.0;
   Vector3 mean = Vector3::Zero();
   for (std::size_t p = 0; p < x.size(); ++p)
-  {
-    const double depth = inward * (x[p].dot(axis) - plane);
-    if (flags[p] != 3 || depth < 0.0 || depth > cell_size)
-      continue;
-    ++w.n_points;
-    total += volume[p];
-    mean += volume[p] * x[p];
-  }
+    if (in_layer(p))
+    {
+      ++w.n_points;
+      total += volume[p];
+      mean += volume[p] * x[p];
+    }
   if (w.n_points == 0)
     return w;
   mean /= total;
-  w.area = total / cell_size;
+  w.area = total / g.cell_size;
   w.equivalent_diameter = std::sqrt(4.0 * w.area / M_PI);
   Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
-  const Eigen::Matrix3d in_plane = Eigen::Matrix3d::Identity() - axis * axis.transpose();
   for (std::size_t p = 0; p < x.size(); ++p)
-  {
-    const double depth = inward * (x[p].dot(axis) - plane);
-    if (flags[p] != 3 || depth < 0.0 || depth > cell_size)
-      continue;
-    const Vector3 r = in_plane * (x[p] - mean);
-    moments += volume[p] * r * r.transpose();
-  }
+    if (in_layer(p))
+    {
+      Vector3 r = x[p] - mean;
+      r[axis_index] = 0.0;
+      moments += volume[p] * r * r.transpose();
+    }
   if (w.n_points < 3)
     return w;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(moments);
-  // Eigenvalues ascending: [0] ~ 0 along the axis, [1] minor, [2] major.
+  // Eigenvalues ascending: [0] ~ 0 along the face normal, [1] minor, [2] major.
   const double minor = eigen.eigenvalues()[1], major = eigen.eigenvalues()[2];
   w.aspect_ratio = minor > 0.0 ? std::sqrt(major / minor) : 1.0;
   w.major_axis = eigen.eigenvectors().col(2);
@@ -54,8 +106,7 @@ FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& v
 } // namespace
 
 WoundMetrics compute_wound_metrics(const std::vector<Vector3>& x, const std::vector<double>& volume,
-                                   const std::vector<std::uint8_t>& flags, const Vector3& axis,
-                                   const double entrance, const double exit, const double cell_size)
+                                   const std::vector<std::uint8_t>& flags, const WoundGeometry& g)
 {
   WoundMetrics m;
   for (std::size_t p = 0; p < x.size(); ++p)
@@ -64,22 +115,29 @@ WoundMetrics compute_wound_metrics(const std::vector<Vector3>& x, const std::vec
     ++m.counts[flag];
     m.volumes[flag] += volume[p];
   }
-  m.entrance = face_wound(x, volume, flags, axis, entrance, +1.0, cell_size);
-  m.exit = face_wound(x, volume, flags, axis, exit, -1.0, cell_size);
+  m.path = path_through_box(g.box_lower, g.box_upper, g.path_origin, g.path_direction);
+  if (!m.path.hits)
+    return m;
+  m.entrance = face_wound(x, volume, flags, g, m.path.entrance_face);
+  if (g.projectile_exited)
+    m.exit = face_wound(x, volume, flags, g, m.path.exit_face);
 
-  const std::size_t n_slices = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((exit - entrance) / cell_size - 1e-9)));
+  const double h = g.cell_size;
+  const std::size_t n_slices =
+    std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(m.path.length() / h - 1e-9)));
   m.tract_depth.resize(n_slices);
   m.tract_area.assign(n_slices, 0.0);
   for (std::size_t s = 0; s < n_slices; ++s)
-    m.tract_depth[s] = (s + 0.5) * cell_size;
+    m.tract_depth[s] = (s + 0.5) * h;
+  const Vector3 entry = g.path_origin + m.path.t_in * g.path_direction;
   for (std::size_t p = 0; p < x.size(); ++p)
   {
     if (flags[p] != 3)
       continue;
-    const double depth = x[p].dot(axis) - entrance;
-    if (depth < 0.0 || depth >= n_slices * cell_size)
+    const double depth = (x[p] - entry).dot(g.path_direction);
+    if (depth < 0.0 || depth >= n_slices * h)
       continue;
-    m.tract_area[static_cast<std::size_t>(depth / cell_size)] += volume[p] / cell_size;
+    m.tract_area[static_cast<std::size_t>(depth / h)] += volume[p] / h;
   }
   return m;
 }

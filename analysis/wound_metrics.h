@@ -1,12 +1,15 @@
 // Wound metrics of a failed point set (docs/DESIGN.md section 8), computed on the reference
-// (initial) positions of the target's points, so they map which material was destroyed:
+// (initial) positions of the target's points, so they map which material was destroyed.
+// The wound is measured on the target's own geometry: the projectile's path (its initial mass
+// centre along its initial velocity) enters the target's reference box through one face and
+// leaves it through another, whatever the angle of the shot.
 //  - failed volume by type (flags 1 matrix, 2 fibers, 3 total);
-//  - the wound of a face: the totally failed points within one cell of the face plane;
-//    failed area A = (their volume) / (cell size); equivalent diameter sqrt(4 A / pi);
-//    aspect ratio sqrt(l1 / l2) of the principal second moments l1 >= l2 of their in-plane
-//    positions (volume-weighted), and the major axis direction (eigenvector of l1);
-//  - the tract: area of the total-failure cross-section in slices one cell thick along
-//    the flight axis, against depth below the entrance face.
+//  - the wound of a face the path crosses: the totally failed points within one cell of the
+//    face plane; failed area A = (their volume) / (cell size); equivalent diameter
+//    sqrt(4 A / pi); aspect ratio sqrt(l1 / l2) of the principal second moments l1 >= l2 of
+//    their positions in the face plane (volume-weighted), and the major axis direction;
+//  - the tract: area of the total-failure cross-section in slices one cell thick normal to
+//    the path, against the distance along the path from the entrance point.
 #pragma once
 
 #include <Eigen/Core>
@@ -19,8 +22,12 @@ namespace vulnus::analysis
 {
 using Vector3 = Eigen::Vector3d;
 
+/// Faces of a box: 0 x-, 1 x+, 2 y-, 3 y+, 4 z-, 5 z+; -1 none.
+const char* box_face_name(int face);
+
 struct FaceWound
 {
+  int face = -1;                      ///< the box face (-1: no such wound)
   std::size_t n_points = 0;
   double area = 0.0;                  ///< m^2
   double equivalent_diameter = 0.0;   ///< m
@@ -28,21 +35,42 @@ struct FaceWound
   Vector3 major_axis = Vector3::Zero(); ///< unit, in the face plane
 };
 
+/// Where a straight path (origin + t direction, direction unit) crosses a box.
+struct PathThroughBox
+{
+  bool hits = false;
+  int entrance_face = -1, exit_face = -1;
+  double t_in = 0.0, t_out = 0.0; ///< m along the path
+  double length() const { return hits ? t_out - t_in : 0.0; }
+};
+
+PathThroughBox path_through_box(const Vector3& lower, const Vector3& upper, const Vector3& origin,
+                                const Vector3& direction);
+
+/// What the metrics are measured on.
+struct WoundGeometry
+{
+  Vector3 box_lower = Vector3::Zero(), box_upper = Vector3::Zero(); ///< the target's extent, m
+  Vector3 path_origin = Vector3::Zero();                            ///< m
+  Vector3 path_direction = Vector3::UnitY();                        ///< unit
+  double cell_size = 0.0;                                           ///< m
+  bool projectile_exited = true; ///< whether an exit wound is measured
+};
+
 struct WoundMetrics
 {
   std::array<std::size_t, 4> counts{{0, 0, 0, 0}}; ///< by flag 0..3
   std::array<double, 4> volumes{{0, 0, 0, 0}};     ///< m^3, by flag
+  PathThroughBox path;
   FaceWound entrance;
-  FaceWound exit;
-  std::vector<double> tract_depth; ///< m, slice centres below the entrance face
+  FaceWound exit; ///< face -1 when the projectile did not leave through the exit face
+  std::vector<double> tract_depth; ///< m, slice centres along the path from the entrance point
   std::vector<double> tract_area;  ///< m^2, total-failure cross-section per slice
 };
 
 /// Points of the target: reference positions, reference volumes, failure flags.
-/// The flight axis is unit; the entrance face is the plane x . axis = entrance, the exit face
-/// x . axis = exit (entrance < exit).
 WoundMetrics compute_wound_metrics(const std::vector<Vector3>& reference_positions,
                                    const std::vector<double>& reference_volumes,
-                                   const std::vector<std::uint8_t>& flags, const Vector3& axis,
-                                   double entrance, double exit, double cell_size);
+                                   const std::vector<std::uint8_t>& flags,
+                                   const WoundGeometry& geometry);
 } // namespace vulnus::analysis

@@ -26,13 +26,26 @@ void append_record(std::vector<char>& bytes, const mpm::Vector3& x, const double
 WoundSample collect_wound_sample(const mpm::Solver& solver)
 {
   const mpm::Particles& p = solver.points();
-  const mpm::Vector3 axis = solver.flight_direction();
   const int projectile = solver.projectile();
   WoundSample sample;
-  double entrance = std::numeric_limits<double>::max(), exit = -entrance;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  mpm::Vector3 lower(inf, inf, inf), upper(-inf, -inf, -inf);
+  auto extend = [&lower, &upper](const mpm::Vector3& x, const double half_spacing) {
+    lower = lower.cwiseMin(x - mpm::Vector3::Constant(half_spacing));
+    upper = upper.cwiseMax(x + mpm::Vector3::Constant(half_spacing));
+  };
+  double projectile_sums[4] = {0, 0, 0, 0}; // reference volume, first moment
+  auto add_to_projectile = [&projectile_sums](const mpm::Vector3& x, const double volume) {
+    projectile_sums[0] += volume;
+    for (int d = 0; d < 3; ++d)
+      projectile_sums[1 + d] += volume * x[d];
+  };
   std::vector<char> failed;
   for (std::size_t b = 0; b < p.n_bodies(); ++b)
   {
+    if (static_cast<int>(b) == projectile)
+      for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
+        add_to_projectile(p.reference_position[i].cast<double>(), p.reference_volume[i]);
     // The target: every deformable body other than the projectile.
     if (static_cast<int>(b) == projectile || solver.body_material(b).is_rigid())
       continue;
@@ -42,9 +55,7 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
     for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
     {
       const mpm::Vector3 X = p.reference_position[i].cast<double>();
-      const double along = X.dot(axis);
-      entrance = std::min(entrance, along - half_spacing);
-      exit = std::max(exit, along + half_spacing);
+      extend(X, half_spacing);
       const std::uint8_t flag = p.failure[i];
       if (flag == 0)
       {
@@ -58,13 +69,13 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
   // Target points that left the grid keep their place in the wound.
   for (const mpm::DepartedPoint& d : solver.departed_points())
   {
+    if (static_cast<int>(d.body) == projectile)
+      add_to_projectile(d.reference_position, d.reference_volume);
     if (static_cast<int>(d.body) == projectile || solver.body_material(d.body).is_rigid())
       continue;
     const double half_spacing =
       0.5 * solver.scene().cell_size / solver.scene().bodies[d.body].particles_per_cell;
-    const double along = d.reference_position.dot(axis);
-    entrance = std::min(entrance, along - half_spacing);
-    exit = std::max(exit, along + half_spacing);
+    extend(d.reference_position, half_spacing);
     if (d.failure == 0)
     {
       ++sample.n_intact;
@@ -74,8 +85,14 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
       append_record(failed, d.reference_position, d.reference_volume, d.failure);
   }
   const mpm::RankGroup& ranks = solver.rank_group();
-  sample.entrance = ranks.min(entrance);
-  sample.exit = ranks.max(exit);
+  double extremes[6] = {-lower[0], -lower[1], -lower[2], upper[0], upper[1], upper[2]};
+  ranks.max(extremes, 6);
+  sample.target_lower = mpm::Vector3(-extremes[0], -extremes[1], -extremes[2]);
+  sample.target_upper = mpm::Vector3(extremes[3], extremes[4], extremes[5]);
+  ranks.sum(projectile_sums, 4);
+  if (projectile_sums[0] > 0.0)
+    sample.projectile_origin =
+      mpm::Vector3(projectile_sums[1], projectile_sums[2], projectile_sums[3]) / projectile_sums[0];
   sample.n_intact = ranks.sum(sample.n_intact);
   ranks.sum(&sample.intact_volume, 1);
   sample.n_points = ranks.sum(static_cast<std::uint64_t>(p.size()));
@@ -99,14 +116,38 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
   return sample;
 }
 
+bool left_through_exit_face(const WoundSample& sample, const mpm::Solver& solver)
+{
+  const mpm::ProjectileExit& exit = solver.projectile_exit();
+  if (!sample.has_target || solver.projectile() < 0 || !exit.recorded)
+    return false;
+  const PathThroughBox path = path_through_box(sample.target_lower, sample.target_upper,
+                                               sample.projectile_origin, solver.flight_direction());
+  if (!path.hits)
+    return false;
+  const int d = path.exit_face / 2;
+  return path.exit_face % 2 == 1 ? exit.position[d] > sample.target_upper[d]
+                                 : exit.position[d] < sample.target_lower[d];
+}
+
 WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solver)
 {
   if (!sample.has_target)
     return WoundMetrics();
+  WoundGeometry geometry;
+  geometry.box_lower = sample.target_lower;
+  geometry.box_upper = sample.target_upper;
+  geometry.path_origin = sample.projectile_origin;
+  geometry.path_direction = solver.flight_direction();
+  geometry.cell_size = solver.scene().cell_size;
+  // A scene without a projectile (a wave test) measures along the flight axis through its
+  // middle; an exit wound needs a projectile that left.
+  if (solver.projectile() < 0)
+    geometry.path_origin = 0.5 * (sample.target_lower + sample.target_upper);
+  geometry.projectile_exited = left_through_exit_face(sample, solver);
   // Intact points enter the metrics only through the intact count and volume.
-  WoundMetrics m = compute_wound_metrics(
-    sample.failed_position, sample.failed_volume, sample.failed_flag, solver.flight_direction(),
-    sample.entrance, sample.exit, solver.scene().cell_size);
+  WoundMetrics m = compute_wound_metrics(sample.failed_position, sample.failed_volume,
+                                         sample.failed_flag, geometry);
   m.counts[0] += sample.n_intact;
   m.volumes[0] += sample.intact_volume;
   return m;

@@ -18,8 +18,9 @@ struct WoundSample
   std::vector<std::uint8_t> failed_flag;     ///< their failure flags (1, 2, 3)
   std::uint64_t n_intact = 0;                ///< intact target points
   double intact_volume = 0.0;                ///< m^3
-  double entrance = 0.0; ///< lowest reference extent of the target along the flight axis, m
-  double exit = 0.0;     ///< highest, m
+  mpm::Vector3 target_lower = mpm::Vector3::Zero(); ///< the target's reference extent, m
+  mpm::Vector3 target_upper = mpm::Vector3::Zero();
+  mpm::Vector3 projectile_origin = mpm::Vector3::Zero(); ///< its reference mass centre, m
   bool has_target = false;
   std::uint64_t n_points = 0; ///< every point of the scene, all bodies
 };
@@ -27,6 +28,12 @@ struct WoundSample
 /// Collective; the sample is complete on rank 0 (the others get their own share).
 WoundSample collect_wound_sample(const mpm::Solver& solver);
 
-/// The wound metrics of the sample (on rank 0).
+/// Whether the projectile left the target through the exit face of its path: its exit was
+/// recorded with its mass centre beyond that face's plane (a ricochet or a sideways exit is
+/// not one).
+bool left_through_exit_face(const WoundSample& sample, const mpm::Solver& solver);
+
+/// The wound metrics of the sample (on rank 0); the exit wound only for a projectile that
+/// left through the exit face.
 WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solver);
 } // namespace vulnus::analysis

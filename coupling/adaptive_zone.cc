@@ -162,6 +162,11 @@ void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
   const mpm::Grid& grid = mpm_solver->background_grid();
   for (const auto& [key, impulse] : pending)
   {
+    if (keys.empty())
+    {
+      impulse_left_by_retirement -= impulse; // impulse_in_transit counts created with a minus
+      continue;
+    }
     const auto at = std::lower_bound(keys.begin(), keys.end(), key);
     std::size_t k = static_cast<std::size_t>(at - keys.begin());
     if (at == keys.end() || *at != key)
@@ -195,5 +200,34 @@ void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
   record.seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   zone_conversions.push_back(record);
+  retire_far_field_if_empty();
+}
+
+void HybridSolver::retire_far_field_if_empty()
+{
+  if (retired || fe_solver->n_active_cells() > 0)
+    return;
+  retired = true;
+  window_open = false;
+  mpm_solver->share_nodes({split.coupled_body, {}, nullptr});
+}
+
+void HybridSolver::retire_far_field_without_stiffness()
+{
+  // A far field of debris only (every live cell failed, no wave speed) cannot choose a step
+  // nor carry a load: its material goes to the zone, which may then hold the whole body.
+  if (std::isfinite(fe_solver->shortest_wave_transit()))
+    return;
+  const double h = split.mpm.cell_size;
+  for (int d = 0; d < 3; ++d)
+    if (split.limit_min[d] > split.fe.slab_min[d] + 1e-9 * h ||
+        split.limit_max[d] < split.fe.slab_max[d] - 1e-9 * h)
+      throw std::runtime_error(
+        "adaptive zone: every far-field cell left has failed (no stiffness, no stable step) "
+        "at t = " + std::to_string(mpm_solver->time()) +
+        " s, but the zone may not grow past its reach to take them in; raise Hybrid/Adaptive "
+        "zone reach to the slab's faces (so the run can continue as pure MPM), or run the "
+        "scene as pure MPM");
+  grow_zone(split.limit_min, split.limit_max);
 }
 } // namespace vulnus::coupling

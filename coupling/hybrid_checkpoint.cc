@@ -9,7 +9,7 @@ namespace binary = mpm::binary;
 
 namespace
 {
-constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '4'};
+constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '5'};
 } // namespace
 
 void HybridSolver::save(std::ostream& out) const
@@ -54,6 +54,7 @@ void HybridSolver::save(std::ostream& out) const
   binary::put_vector(out, columns);
   binary::put_vector(out, values);
   binary::put_vector(out, balance_mpm_mass);
+  binary::put(out, impulse_left_by_retirement);
   out.write(tag, sizeof(tag));
   if (!out)
     throw std::runtime_error("hybrid checkpoint could not be written");
@@ -80,6 +81,7 @@ void HybridSolver::restore(std::istream& in)
     for (std::vector<mpm::Vector3>* v : {&velocity_start, &velocity_end, &created, &correction})
       v->assign(keys.size(), mpm::Vector3::Zero());
     mpm_solver->share_nodes({split.coupled_body, keys, this});
+    retire_far_field_if_empty();
   }
   mpm_solver->restore(in);
   fe_solver->restore(in);
@@ -138,6 +140,7 @@ void HybridSolver::restore(std::istream& in)
   binary::get_vector(in, masses);
   if (rows > 0 && masses.size() == keys.size())
     factor_balance_matrix(masses);
+  binary::get(in, impulse_left_by_retirement);
   binary::expect_tag(in, tag, "hybrid checkpoint is incomplete (no trailer)");
 }
 } // namespace vulnus::coupling

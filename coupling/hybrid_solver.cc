@@ -135,6 +135,14 @@ void HybridSolver::advance()
     if (grown_min != split.hybrid.zone_min || grown_max != split.hybrid.zone_max)
       grow_zone(grown_min, grown_max);
   }
+  if (adaptive.enabled && !window_open && !retired)
+    retire_far_field_without_stiffness();
+  if (retired)
+  {
+    mpm_solver->advance();
+    ++book.mpm_steps;
+    return;
+  }
   const double t = mpm_solver->time();
   const double end = split.mpm.end_time;
   if (split.hybrid.scheme == CouplingScheme::same_step)
@@ -334,7 +342,7 @@ void HybridSolver::exchange(const double time, const double dt,
 Eigen::Vector3d HybridSolver::impulse_in_transit() const
 {
   // Before the next window starts: what the last one created, to be taken back.
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sum = impulse_left_by_retirement;
   for (std::size_t k = 0; k < keys.size(); ++k)
     sum -= created[k] - correction[k];
   return sum;

@@ -158,6 +158,9 @@ public:
   /// far field is rebuilt without them and takes over the rest of its state, and the
   /// interface moves to the new zone's surface. Call between steps at a window end.
   void grow_zone(const std::array<double, 3>& new_min, const std::array<double, 3>& new_max);
+  /// True once the zone holds the whole split body: the far field has no cell left (its
+  /// supports' impulses and energies stay as they were) and the run goes on as pure MPM.
+  bool far_field_retired() const { return retired; }
 
   /// Both sides' states and the coupling's own (window, interface velocities, corrections,
   /// ledger) in binary; restore() on a solver built from the same deck on the same rank count
@@ -173,6 +176,13 @@ private:
   /// Adaptive zone: the box the zone must grow to so that every far-field cell nearing
   /// failure sits inside with the margin (the zone itself when none does). Collective.
   std::pair<std::array<double, 3>, std::array<double, 3>> zone_needed();
+  /// Collective, at a window end: a far field with no cell that carries stress left (all
+  /// failed) converts whole, when the limit reaches the body's faces (else throws a
+  /// RunFailure-style error naming the remedy), and retires.
+  void retire_far_field_without_stiffness();
+  /// After a conversion: a far field with no live cell retires (the MPM side stops sharing
+  /// nodes with it).
+  void retire_far_field_if_empty();
   /// Builds the far field for the current split.fe (setup and the initial velocity).
   std::unique_ptr<fem::FarFieldSolver> build_far_field() const;
   /// Lists every FE interface node by its grid key on every rank (sorted) and sums the FE
@@ -268,5 +278,9 @@ private:
   std::uint64_t n_cells_beyond_limit = 0;
   std::uint64_t last_zone_check = 0; ///< MPM step of the last check
   double check_seconds = 0.0;
+  bool retired = false;
+  /// The impulse in transit when the far field retired (no interface node left to take it
+  /// back through), kg m/s: it stays in the momentum ledger.
+  mpm::Vector3 impulse_left_by_retirement = mpm::Vector3::Zero();
 };
 } // namespace vulnus::coupling

@@ -20,8 +20,7 @@ BoundaryForces FarFieldSolver::Data::boundary_forces() const
       forces.interface[n][c] = transmitted(interface_nodes[n].dofs[c]);
   for (const DirichletDof& dirichlet : dirichlet_dofs)
     if (dirichlet.source != DirichletSource::interface)
-      forces.supports[dirichlet.face][dirichlet.component] +=
-        lumped_mass(dirichlet.dof) * acceleration(dirichlet.dof) - transmitted(dirichlet.dof);
+      forces.supports[dirichlet.face][dirichlet.component] -= transmitted(dirichlet.dof);
   return forces;
 }
 
@@ -39,6 +38,26 @@ void FarFieldSolver::Data::integrate_boundary_forces(const double dt)
     interface_impulse_last_step[n] = dt * (w_start * boundary_now.interface[n] + w_end * end.interface[n]);
   for (unsigned int b = 0; b <= n_slab_faces; ++b)
     support_impulse[b] += dt * (w_start * boundary_now.supports[b] + w_end * end.supports[b]);
+  // R = m a - X: the inertia part as the supported dofs' momentum change over the step.
+  if (dirichlet_velocity_booked.size() != dirichlet_dofs.size())
+    reset_booked_dirichlet_velocities();
+  for (std::size_t k = 0; k < dirichlet_dofs.size(); ++k)
+  {
+    const DirichletDof& dirichlet = dirichlet_dofs[k];
+    if (dirichlet.source == DirichletSource::interface)
+      continue;
+    const double v = velocity(dirichlet.dof);
+    support_impulse[dirichlet.face][dirichlet.component] +=
+      lumped_mass(dirichlet.dof) * (v - dirichlet_velocity_booked[k]);
+    dirichlet_velocity_booked[k] = v;
+  }
   boundary_now = end;
+}
+
+void FarFieldSolver::Data::reset_booked_dirichlet_velocities()
+{
+  dirichlet_velocity_booked.resize(dirichlet_dofs.size());
+  for (std::size_t k = 0; k < dirichlet_dofs.size(); ++k)
+    dirichlet_velocity_booked[k] = velocity(dirichlet_dofs[k].dof);
 }
 } // namespace vulnus::fem

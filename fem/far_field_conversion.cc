@@ -166,6 +166,7 @@ void FarFieldSolver::convert_cells_inside(const std::array<double, 3>& box_min,
   for (unsigned int n = 0; n < d.interface_nodes.size(); ++n)
     d.interface_velocity_targets[n] = velocity(d.interface_nodes[n]);
   d.boundary_now = d.boundary_forces();
+  d.reset_booked_dirichlet_velocities();
   d.interface_impulse_last_step.assign(d.interface_nodes.size(), Tensor<1, 3>());
   d.last_power = d.external_power();
 }

@@ -42,8 +42,9 @@ struct DirichletDof
 /// Forces across the constrained boundary at one state, N (this rank's nodes):
 ///   interface[n]  what the rest of the body transmits to interface node n,
 ///                 X = f_ext - f_int - ((M a) - m a) on the node (lumped mass: f_ext - f_int);
-///   supports[b]   what the supports of face b exert on the body, R = M a - f_ext + f_int
-///                 summed over the face's constrained dofs.
+///   supports[b]   the force part of what the supports of face b exert on the body,
+///                 f_int - f_ext summed over the face's constrained dofs (their inertia,
+///                 m a, is booked as m dv in integrate_boundary_forces).
 /// Over a step the body's momentum changes by the time integrals of the supports' R and the
 /// interface's m a - X (docs/DESIGN.md section 6).
 struct BoundaryForces
@@ -143,6 +144,12 @@ struct FarFieldSolver::Data
   BoundaryForces boundary_now;
   std::vector<dealii::Tensor<1, 3>> interface_impulse_last_step;
   std::array<dealii::Tensor<1, 3>, n_slab_faces + 1> support_impulse;
+  /// Velocity of each Dirichlet dof when its support impulse was last booked: the supports'
+  /// impulse takes each supported dof's momentum change exactly (m dv), not through the
+  /// integrator's weights of an acceleration that a prescribed velocity defines only
+  /// approximately. Reset with the current velocities where boundary_now is reset.
+  std::vector<double> dirichlet_velocity_booked;
+  void reset_booked_dirichlet_velocities();
 
   EvaluationSums last_sums;
   FePhaseTimes phase_times;

@@ -383,6 +383,7 @@ void FarFieldSolver::setup(const std::function<void(Triangulation<3, 3>&)>& modi
   d.skip_quiet_cells = d.prm.skip_quiet_cells;
   d.last_power = d.external_power();
   d.boundary_now = d.boundary_forces();
+  d.reset_booked_dirichlet_velocities();
   d.interface_impulse_last_step.assign(d.interface_nodes.size(), Tensor<1, 3>());
   d.support_impulse = {};
 }
@@ -413,7 +414,11 @@ double FarFieldSolver::next_time_step() const
     return d.prm.time_step;
   const double transit = shortest_wave_transit();
   AssertThrow(std::isfinite(transit),
-              ExcMessage("FE: no positive wave speed in the mesh; cannot choose a time step"));
+              ExcMessage("FE: no far-field cell carries stress any more (every live cell has "
+                         "failed, or none is left), so no stable time step exists: the wound "
+                         "has reached the whole far field; enlarge the MPM zone (Hybrid/Zone "
+                         "min, Zone max, or Hybrid/Adaptive zone with a reach to the slab's "
+                         "faces) or run the scene as pure MPM"));
   return d.prm.cfl * transit;
 }
 

@@ -142,6 +142,7 @@ void FarFieldSolver::restore(std::istream& in)
   std::vector<Tensor<1, 3>> faces;
   get_tensors(in, faces, n_slab_faces + 1);
   std::copy(faces.begin(), faces.end(), d.boundary_now.supports.begin());
+  d.reset_booked_dirichlet_velocities(); // they were booked up to the saved state
   get_tensors(in, faces, n_slab_faces + 1);
   std::copy(faces.begin(), faces.end(), d.support_impulse.begin());
   visit_scalars(d, [&in](auto& value) { binary::get(in, value); });

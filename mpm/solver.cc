@@ -128,6 +128,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   sort_points();
   const SceneDiagnostics d = diagnostics();
   energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
+  momentum_at_start = d.momentum;
   check_state();
 }
 
@@ -140,6 +141,7 @@ void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& 
         particles.velocity[p] = field(particles.position[p]);
   const SceneDiagnostics d = diagnostics();
   energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
+  momentum_at_start = d.momentum;
 }
 
 bool Solver::projectile_is_far_stiffer() const
@@ -402,7 +404,15 @@ void Solver::advance(const double cap)
   for (std::size_t b = 0; b < peak_yield_ratio.size(); ++b)
     peak_yield_ratio[b] = std::max(peak_yield_ratio[b], yield_ratio[b]);
 
-  // Free rigid bodies respond to the contact force (translation only).
+  // Free rigid bodies respond to the contact force (translation only); a prescribed motion
+  // is held against it from outside, and gravity acts on the deformable bodies.
+  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+  {
+    if (!grid_settings.body_is_rigid[b])
+      accumulated_external_impulse += dt * body_mass[b] * parameters.gravity;
+    else if (parameters.bodies[b].rigid_motion != RigidMotion::free)
+      accumulated_external_impulse -= dt * grid_result.contact_force[b];
+  }
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
     if (grid_settings.body_is_rigid[b] && parameters.bodies[b].rigid_motion == RigidMotion::free)
     {

@@ -77,6 +77,7 @@ struct ProjectileExit
   double time = 0.0;                   ///< s
   Vector3 velocity = Vector3::Zero();  ///< m/s, mass-weighted mean
   double kinetic_energy = 0.0;         ///< J
+  Vector3 position = Vector3::Zero();  ///< m, mass centre when it left
 };
 
 /// Distributed runs (a communicator of several ranks): each rank holds the points of one slab
@@ -175,6 +176,14 @@ public:
   std::array<Vector3, 6> support_impulses() const;
   /// Total energy at the start (J).
   double initial_energy() const { return energy_at_start; }
+  /// Momentum of every body (rigid ones included) at the start, kg m/s.
+  const Vector3& initial_momentum() const { return momentum_at_start; }
+  /// Impulse from outside the bodies and supports since the start, N s: gravity on the
+  /// deformable bodies, and what holds a rigid body of prescribed motion on its course
+  /// (minus the contact impulse it received).
+  const Vector3& external_impulse() const { return accumulated_external_impulse; }
+  /// Momentum brought in by points added to the bodies (add_points), kg m/s.
+  const Vector3& added_momentum() const { return accumulated_added_momentum; }
   /// Number of nodes where bodies met in the last step.
   std::size_t contact_nodes() const { return grid_result.n_contact_nodes; }
   /// Active nodes of the last step (kept across a checkpoint, like the contact results).
@@ -283,6 +292,9 @@ private:
   std::size_t n_steps = 0;
   double accumulated_contact_dissipation = 0.0;
   double energy_at_start = 0.0;
+  Vector3 momentum_at_start = Vector3::Zero();
+  Vector3 accumulated_external_impulse = Vector3::Zero(); ///< same on every rank
+  Vector3 accumulated_added_momentum = Vector3::Zero();   ///< same on every rank
   PhaseTimes timings;
   std::size_t n_removed = 0;
   std::size_t n_active_last_step = 0;

@@ -25,6 +25,7 @@ double Solver::add_points(const std::size_t b, Particles added)
 
   const materials::Material& law = *materials_of_body[b];
   double energy = 0.0, mass = 0.0;
+  Vector3 momentum = Vector3::Zero();
   for (std::size_t p = 0; p < added.size(); ++p)
   {
     materials::PointState state;
@@ -46,11 +47,13 @@ double Solver::add_points(const std::size_t b, Particles added)
     energy += 0.5 * added.mass[p] * added.velocity[p].squaredNorm() +
               response.energy_density * added.reference_volume[p];
     mass += added.mass[p];
+    momentum += added.mass[p] * added.velocity[p];
   }
   particles.insert_into_body(b, added);
-  double sums[2] = {energy, mass};
-  ranks.sum(sums, 2);
+  double sums[5] = {energy, mass, momentum[0], momentum[1], momentum[2]};
+  ranks.sum(sums, 5);
   body_mass[b] += sums[1];
+  accumulated_added_momentum += Vector3(sums[2], sums[3], sums[4]);
   migrate_points(true);
   sort_points();
   return sums[0];

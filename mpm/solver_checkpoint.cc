@@ -14,7 +14,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '5'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '6'};
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -36,6 +36,9 @@ void Solver::save(std::ostream& out) const
   put(out, static_cast<std::uint64_t>(n_steps));
   put(out, accumulated_contact_dissipation);
   put(out, energy_at_start);
+  put(out, momentum_at_start);
+  put(out, accumulated_external_impulse);
+  put(out, accumulated_added_momentum);
   put(out, static_cast<std::uint64_t>(n_removed));
   put(out, outflow_energy);
   put(out, outflow_momentum);
@@ -49,6 +52,7 @@ void Solver::save(std::ostream& out) const
   put(out, exit_record.time);
   put(out, exit_record.velocity);
   put(out, exit_record.kinetic_energy);
+  put(out, exit_record.position);
   put(out, static_cast<std::uint64_t>(exit_record.past_exit_plane));
   put(out, static_cast<std::uint64_t>(projectile_reached_target));
   for (const Vector3& impulse : support_impulse_here)
@@ -92,6 +96,10 @@ void Solver::restore(std::istream& in)
   get(in, steps);
   get(in, contact);
   get(in, energy);
+  Vector3 momentum_start, external, added;
+  get(in, momentum_start);
+  get(in, external);
+  get(in, added);
   get(in, removed);
   get(in, outflow);
   get(in, outflow_p);
@@ -103,6 +111,7 @@ void Solver::restore(std::istream& in)
   get(in, exit_loaded.time);
   get(in, exit_loaded.velocity);
   get(in, exit_loaded.kinetic_energy);
+  get(in, exit_loaded.position);
   std::uint64_t past_exit_plane = 0, reached_target = 0;
   get(in, past_exit_plane);
   get(in, reached_target);
@@ -160,6 +169,9 @@ void Solver::restore(std::istream& in)
   n_steps = steps;
   accumulated_contact_dissipation = contact;
   energy_at_start = energy;
+  momentum_at_start = momentum_start;
+  accumulated_external_impulse = external;
+  accumulated_added_momentum = added;
   n_removed = removed;
   outflow_energy = outflow;
   outflow_momentum = outflow_p;

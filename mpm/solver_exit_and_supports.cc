@@ -48,21 +48,27 @@ void Solver::record_projectile_exit()
       return;
     }
   }
-  double sums[5] = {0, 0, 0, 0, 0}; // mass, momentum, kinetic energy
+  double sums[8] = {0, 0, 0, 0, 0, 0, 0, 0}; // mass, momentum, kinetic energy, first moment
   for (std::size_t p = particles.begin_of(projectile_body); p < particles.end_of(projectile_body); ++p)
   {
     const double m = particles.mass[p];
     sums[0] += m;
     for (int d = 0; d < 3; ++d)
+    {
       sums[1 + d] += m * particles.velocity[p][d];
+      sums[5 + d] += m * particles.position[p][d];
+    }
     sums[4] += 0.5 * m * particles.velocity[p].squaredNorm();
   }
-  ranks.sum(sums, 5);
+  ranks.sum(sums, 8);
   exit_record.recorded = true;
   exit_record.past_exit_plane = past_exit_plane;
   exit_record.time = current_time;
   if (sums[0] > 0.0)
+  {
     exit_record.velocity = Vector3(sums[1], sums[2], sums[3]) / sums[0];
+    exit_record.position = Vector3(sums[5], sums[6], sums[7]) / sums[0];
+  }
   exit_record.kinetic_energy = sums[4];
 }
 

@@ -6,6 +6,8 @@
 #include "fem/far_field_solver.h"
 #include "simulator/stepper.h"
 
+#include <Eigen/Core>
+
 #include <memory>
 
 namespace vulnus::simulator
@@ -45,5 +47,6 @@ private:
   fem::FeSceneParameters parameters;
   std::unique_ptr<fem::FarFieldSolver> solver;
   double dt = 0.0; ///< s, of the last step
+  Eigen::Vector3d initial_momentum = Eigen::Vector3d::Zero(); ///< kg m/s, at t = 0
 };
 } // namespace vulnus::simulator

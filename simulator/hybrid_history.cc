@@ -5,6 +5,8 @@
 
 #include "analysis/mpm_summary.h"
 
+#include <algorithm>
+
 namespace vulnus::simulator
 {
 double hybrid_scene_energy(const coupling::HybridSolver& solver, const mpm::SceneDiagnostics& m,
@@ -35,6 +37,19 @@ std::vector<double> hybrid_history_row(const coupling::HybridSolver& solver,
   const mpm::SceneDiagnostics m = solver.mpm().diagnostics();
   const fem::FeDiagnostics f = solver.fe().diagnostics();
   std::vector<double> row = mpm_history_row(solver.mpm(), m);
+  // The target and the supports are the whole scene's: the far field's share added.
+  static const std::vector<std::string> columns = mpm_history_columns();
+  auto column = [](const char* name) {
+    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
+  static const std::size_t target_kinetic = column("target_kinetic_J"),
+                           target_momentum = column("target_momentum_x"),
+                           first_support = column("support_impulse_x-");
+  row[target_kinetic] += f.kinetic_energy;
+  for (unsigned int d = 0; d < 3; ++d)
+    row[target_momentum + d] += f.momentum[d];
+  for (unsigned int face = 0; face < fem::n_slab_faces; ++face)
+    row[first_support + face] += f.support_impulses[face][face / 2];
   const double energy = hybrid_scene_energy(solver, m, f);
   const coupling::InterfaceLedger& ledger = solver.ledger();
   const Eigen::Vector3d momentum = m.momentum + Eigen::Vector3d(f.momentum[0], f.momentum[1], f.momentum[2]);

@@ -40,7 +40,8 @@ HybridStepper::HybridStepper(const deck::RunParameters& parameters, const MPI_Co
              communicator),
       projectile(projectile_start(solver.mpm())),
       initial_energy(hybrid_scene_energy(solver, solver.mpm().diagnostics(),
-                                         solver.fe().diagnostics()))
+                                         solver.fe().diagnostics())),
+      initial_momentum(solver.total_momentum())
 {
 }
 
@@ -136,6 +137,10 @@ std::vector<std::string> HybridStepper::events()
       << c.energy_before << " J, momentum change " << (c.momentum_after - c.momentum_before).norm()
       << " kg m/s";
     lines.push_back(o.str());
+    if (conversions_logged + 1 == done.size() && solver.far_field_retired())
+      lines.push_back("adaptive zone: the zone now holds the whole target; the far field has "
+                      "no cell left and the run continues as pure MPM (the far field's support "
+                      "impulses and energies up to now stay in the totals)");
   }
   return lines;
 }
@@ -179,11 +184,40 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
   const mpm::SceneDiagnostics m = mpm_side.diagnostics();
   const fem::FeDiagnostics fe = solver.fe().diagnostics();
   const std::array<mpm::Vector3, 6> supports = mpm_side.support_impulses(); // collective
+  const Eigen::Vector3d momentum_now = solver.total_momentum();               // collective
   const mpm::RankGroup& ranks = mpm_side.rank_group();
   totals.mpi_bytes_sent = ranks.sum(ranks.bytes_sent());
   if (ranks.rank() != 0)
     return {};
   nlohmann::json summary = analysis::mpm_summary(mpm_side, totals, wound, m, supports);
+  // One support ledger: each face's supports on both sides, the split kept in "hybrid".
+  static const char* const face_names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+  analysis::MomentumAudit audit = analysis::mpm_momentum_audit(mpm_side, m, supports);
+  audit.initial = initial_momentum;
+  audit.now = momentum_now; // both sides, and the impulse the next window gives back
+  audit.added.setZero();               // converted far-field material was counted in the FE's
+  double support_magnitudes = 0.0;
+  nlohmann::json mpm_split, fe_split;
+  for (unsigned int f = 0; f < fem::n_slab_faces; ++f)
+  {
+    const mpm::Vector3 fe_impulse(fe.support_impulses[f][0], fe.support_impulses[f][1],
+                                  fe.support_impulses[f][2]);
+    const mpm::Vector3 total = supports[f] + fe_impulse;
+    summary["supports"][face_names[f]]["impulse_N_s"] = {total[0], total[1], total[2]};
+    mpm_split[face_names[f]] = {supports[f][0], supports[f][1], supports[f][2]};
+    fe_split[face_names[f]] = {fe_impulse[0], fe_impulse[1], fe_impulse[2]};
+    audit.supports += fe_impulse;
+    support_magnitudes += total.norm();
+  }
+  audit.scale = std::max({audit.initial.norm(), support_magnitudes, audit.external.norm()});
+  summary["momentum_audit"] = analysis::momentum_audit_json(audit);
+  const Eigen::Vector3d fe_momentum(fe.momentum[0], fe.momentum[1], fe.momentum[2]);
+  summary["target"]["momentum_kg_m_s"] = {
+    summary["target"]["momentum_kg_m_s"][0].get<double>() + fe_momentum[0],
+    summary["target"]["momentum_kg_m_s"][1].get<double>() + fe_momentum[1],
+    summary["target"]["momentum_kg_m_s"][2].get<double>() + fe_momentum[2]};
+  summary["target"]["kinetic_energy_J"] =
+    summary["target"]["kinetic_energy_J"].get<double>() + fe.kinetic_energy;
   const double energy = hybrid_scene_energy(solver, m, fe);
   const coupling::InterfaceLedger& ledger = solver.ledger();
   const coupling::HybridScene& split = solver.scene();
@@ -222,6 +256,9 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                                     {"windows_shortened_to_one_transit", ledger.windows_shortened},
                                     {"shortest_window_limit_s", ledger.shortest_window_limit}};
   summary["hybrid"]["monitors"] = monitors.summary();
+  summary["hybrid"]["far_field_retired"] = solver.far_field_retired();
+  summary["hybrid"]["mpm_support_impulse_N_s"] = mpm_split;
+  summary["hybrid"]["fe_support_impulse_N_s"] = fe_split;
   summary["hybrid"]["zone_min_m"] = solver.zone_min();
   summary["hybrid"]["zone_max_m"] = solver.zone_max();
   if (split.hybrid.adaptive.enabled)
@@ -248,13 +285,6 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                                           {"limit_min_m", split.limit_min},
                                           {"limit_max_m", split.limit_max}};
   }
-  // What the far field's supports gave the body, face by face (x-, x+, y-, y+, z-, z+).
-  static const char* const face_names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
-  for (unsigned int b = 0; b < fem::n_slab_faces; ++b)
-  {
-    const dealii::Tensor<1, 3>& j = fe.support_impulses[b];
-    summary["hybrid"]["fe_support_impulse_N_s"][face_names[b]] = {j[0], j[1], j[2]};
-  }
   return summary;
 }
 
@@ -274,7 +304,8 @@ std::string HybridStepper::final_report(const nlohmann::json& summary) const
       << ledger.shortest_window_limit << " s at the shortest)";
   // A window steps the far field to its end first: a run that stops inside one leaves the
   // far field's state (mesh output, supports, energies) at the window's end.
-  if (std::abs(solver.fe().time() - solver.time()) > 1e-9 * solver.time())
+  if (!solver.far_field_retired() &&
+      std::abs(solver.fe().time() - solver.time()) > 1e-9 * solver.time())
     o << "; the run stopped inside a coupling window: the far field stands at t = "
       << solver.fe().time() << " s";
   if (solver.scene().hybrid.adaptive.enabled)

@@ -63,6 +63,7 @@ private:
   std::size_t conversions_logged = 0;
   ProjectileStart projectile;
   double initial_energy; ///< J, of the whole scene at t = 0
+  Eigen::Vector3d initial_momentum; ///< kg m/s, of the whole scene at t = 0
   HybridMonitors monitors;
 };
 } // namespace vulnus::simulator

@@ -43,6 +43,12 @@ MeshSeries::MeshSeries(const std::string& directory, const double interval, cons
 
 void MeshSeries::write(Stepper& stepper)
 {
+  // A far field the adaptive zone has taken in whole has no mesh left to write.
+  if (stepper.fe_side()->n_active_cells() == 0)
+  {
+    last_time = stepper.time();
+    return;
+  }
   const fem::FeMeshForOutput mesh = stepper.fe_side()->mesh_for_output(); // collective
   std::string error;
   if (output) try

@@ -1,5 +1,6 @@
 // The time loop: start or restart, step, record, stop on signals or failures, summarise.
 #include "simulator/simulator.h"
+#include "analysis/momentum_audit.h"
 
 #include "deck/scene_entries.h"
 #include "mpm/rank_group.h"
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace vulnus::simulator
@@ -233,6 +235,11 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
   const int status = stop_signal != 0 ? 128 + stop_signal : totals.completed ? 0 : 1;
   if (!directory.writes_files())
     return status;
+  if (const std::optional<std::string> audit = analysis::momentum_audit_warning(summary))
+  {
+    directory.warn(*audit);
+    totals.warnings.push_back(*audit);
+  }
   summary["warnings"] = totals.warnings;
   io::write_summary_json(directory.file("summary.json"), summary);
   directory.log(stepper.final_report(summary));

@@ -31,7 +31,10 @@ FIGURES = [
     ("entrance_aspect_ratio", lambda s: _get(s, "entrance_wound", "aspect_ratio")),
     ("exit_diameter_m", lambda s: _get(s, "exit_wound", "equivalent_diameter_m")),
     ("exit_aspect_ratio", lambda s: _get(s, "exit_wound", "aspect_ratio")),
+    ("bullet_exited", lambda s: _get(s, "bullet", "exited")),
+    # empty when the bullet did not leave the target; its speed at the end is the next column
     ("bullet_exit_velocity_m_s", lambda s: _get(s, "bullet", "exit_velocity_m_s")),
+    ("bullet_velocity_now_m_s", lambda s: _get(s, "bullet", "velocity_now_m_s")),
     ("kinetic_energy_lost_J", lambda s: _get(s, "bullet", "kinetic_energy_lost_J")),
     ("energy_balance_error", lambda s: _get(s, "energy", "balance_error")),
     ("end_time_s", lambda s: _get(s, "time_s")),

@@ -34,6 +34,18 @@ PointSet slab(const double s, const std::function<std::uint8_t(const Vector3&)>&
       }
   return set;
 }
+
+/// The slab's box, shot normally along +y from below through its centre.
+WoundGeometry normal_shot()
+{
+  WoundGeometry g;
+  g.box_lower = Vector3(-20e-3, 0.0, -20e-3);
+  g.box_upper = Vector3(20e-3, 10e-3, 20e-3);
+  g.path_origin = Vector3(0.0, -10e-3, 0.0);
+  g.path_direction = Vector3::UnitY();
+  g.cell_size = 1e-3;
+  return g;
+}
 } // namespace
 
 TEST(WoundMetrics, CircularCylinderGivesItsDiameterAndAspectRatioOne)
@@ -42,7 +54,7 @@ TEST(WoundMetrics, CircularCylinderGivesItsDiameterAndAspectRatioOne)
   const PointSet set = slab(s, [&](const Vector3& p) {
     return std::uint8_t(p[0] * p[0] + p[2] * p[2] < radius * radius ? 3 : 0);
   });
-  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, Vector3::UnitY(), 0.0, 10e-3, 1e-3);
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, normal_shot());
   // Staircase of a circle on a 0.25 mm lattice: area error ~ perimeter * s / 2 / area ~ 3%,
   // half that in the diameter.
   EXPECT_NEAR(m.entrance.equivalent_diameter, 2 * radius, 0.02 * 2 * radius);
@@ -60,7 +72,7 @@ TEST(WoundMetrics, EllipticCylinderGivesItsAxesRatio)
   const PointSet set = slab(s, [&](const Vector3& p) {
     return std::uint8_t((p[0] / a) * (p[0] / a) + (p[2] / b) * (p[2] / b) < 1.0 ? 3 : 0);
   });
-  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, Vector3::UnitY(), 0.0, 10e-3, 1e-3);
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, normal_shot());
   // Second moments of an elliptic disc: a^2/4 and b^2/4, so the ratio of axes is a / b.
   EXPECT_NEAR(m.exit.aspect_ratio, a / b, 0.03 * a / b);
   EXPECT_NEAR(std::abs(m.exit.major_axis[0]), 1.0, 1e-6);
@@ -75,7 +87,7 @@ TEST(WoundMetrics, ConeAreaGrowsWithDepth)
     const double r = radius_at(p[1]);
     return std::uint8_t(p[0] * p[0] + p[2] * p[2] < r * r ? 3 : 0);
   });
-  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, Vector3::UnitY(), 0.0, 10e-3, 1e-3);
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, normal_shot());
   ASSERT_EQ(m.tract_area.size(), 10u);
   for (std::size_t k = 0; k < m.tract_area.size(); ++k)
   {
@@ -102,7 +114,7 @@ TEST(WoundMetrics, VolumesAndCountsByFailureType)
     set.volume.push_back(1e-9 * (i + 1));
     set.flags.push_back(flags[i]);
   }
-  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, Vector3::UnitY(), 0.0, 10e-3, 1e-3);
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, normal_shot());
   EXPECT_EQ(m.counts[0], 1u);
   EXPECT_EQ(m.counts[1], 2u);
   EXPECT_EQ(m.counts[2], 1u);
@@ -111,4 +123,88 @@ TEST(WoundMetrics, VolumesAndCountsByFailureType)
   EXPECT_NEAR(m.volumes[3], 18e-9, 1e-20);
   EXPECT_EQ(m.entrance.n_points, 0u); // depth 5 mm: in neither face layer
   EXPECT_EQ(m.exit.n_points, 0u);
+}
+
+TEST(WoundMetrics, PathThroughBoxFindsTheFacesItCrosses)
+{
+  const Vector3 lower(-20e-3, 0.0, -20e-3), upper(20e-3, 10e-3, 20e-3);
+  const PathThroughBox normal = path_through_box(lower, upper, Vector3(0, -5e-3, 0), Vector3::UnitY());
+  ASSERT_TRUE(normal.hits);
+  EXPECT_EQ(normal.entrance_face, 2);
+  EXPECT_EQ(normal.exit_face, 3);
+  EXPECT_NEAR(normal.length(), 10e-3, 1e-15);
+  // Backwards along -y from above: enters y+, leaves y-.
+  const PathThroughBox back = path_through_box(lower, upper, Vector3(0, 15e-3, 0), -Vector3::UnitY());
+  EXPECT_EQ(back.entrance_face, 3);
+  EXPECT_EQ(back.exit_face, 2);
+  // Grazing along x through the slab's middle: enters x-, leaves x+ after 40 mm.
+  const PathThroughBox side = path_through_box(lower, upper, Vector3(-30e-3, 5e-3, 0), Vector3::UnitX());
+  EXPECT_EQ(side.entrance_face, 0);
+  EXPECT_EQ(side.exit_face, 1);
+  EXPECT_NEAR(side.length(), 40e-3, 1e-15);
+  // Steep enough to leave through a side face: 80 degrees from y, from the centre of y-.
+  const double a = 80.0 * M_PI / 180.0;
+  const PathThroughBox steep =
+    path_through_box(lower, upper, Vector3(0, 0, 0), Vector3(std::sin(a), std::cos(a), 0));
+  // y+ would be reached at x = 10 mm tan 80 degrees = 56.7 mm: it leaves through x+ first.
+  EXPECT_EQ(steep.entrance_face, 2);
+  EXPECT_EQ(steep.exit_face, 1);
+  EXPECT_NEAR(steep.length(), 20e-3 / std::sin(a), 1e-12);
+  // A path that passes beside the box misses it.
+  EXPECT_FALSE(path_through_box(lower, upper, Vector3(30e-3, -5e-3, 0), Vector3::UnitY()).hits);
+}
+
+// A 30 degree shot: a failed cylinder of radius r along the oblique path. Its wound on each
+// face is an ellipse of area pi r^2 / cos 30 and axes ratio 1 / cos 30, the tract runs the
+// path's length through the slab, 10 mm / cos 30, and a slice normal to the path that lies
+// inside the slab cuts the cylinder's cross-section pi r^2.
+TEST(WoundMetrics, ObliqueShotIsMeasuredOnTheFacesItCrosses)
+{
+  const double radius = 3e-3, s = 0.25e-3, angle = 30.0 * M_PI / 180.0;
+  const Vector3 direction(std::sin(angle), std::cos(angle), 0.0);
+  const Vector3 entry(-2e-3, 0.0, 0.0);
+  const PointSet set = slab(s, [&](const Vector3& p) {
+    const Vector3 r = p - entry;
+    return std::uint8_t((r - r.dot(direction) * direction).squaredNorm() < radius * radius ? 3 : 0);
+  });
+  WoundGeometry g = normal_shot();
+  g.path_origin = entry - 10e-3 * direction;
+  g.path_direction = direction;
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, g);
+  EXPECT_EQ(m.entrance.face, 2);
+  EXPECT_EQ(m.exit.face, 3);
+  const double ellipse = M_PI * radius * radius / std::cos(angle);
+  // The face layer is a cell thick, so the ellipse is smeared by a cell along x (tan 30 of
+  // it): about 2 % in the area and 8 % in the ratio on top of the lattice's staircase.
+  EXPECT_NEAR(m.entrance.area, ellipse, 0.05 * ellipse);
+  EXPECT_NEAR(m.exit.area, ellipse, 0.05 * ellipse);
+  EXPECT_NEAR(m.entrance.aspect_ratio, 1.0 / std::cos(angle), 0.1);
+  EXPECT_NEAR(std::abs(m.entrance.major_axis[0]), 1.0, 1e-6);
+  EXPECT_NEAR(m.path.length(), 10e-3 / std::cos(angle), 1e-12);
+  ASSERT_EQ(m.tract_area.size(), 12u); // ceil(11.55 mm / 1 mm)
+  EXPECT_NEAR(m.tract_depth.back(), 11.5e-3, 1e-12);
+  // Slices 4 to 7 (4-8 mm along the path) hold a whole cross-section inside the slab.
+  for (std::size_t k = 4; k < 8; ++k)
+    EXPECT_NEAR(m.tract_area[k], M_PI * radius * radius, 0.04 * M_PI * radius * radius) << k;
+}
+
+TEST(WoundMetrics, NoExitWoundForAProjectileThatDidNotLeave)
+{
+  const double radius = 4.5e-3, s = 0.5e-3;
+  const PointSet set = slab(s, [&](const Vector3& p) {
+    return std::uint8_t(p[0] * p[0] + p[2] * p[2] < radius * radius ? 3 : 0);
+  });
+  WoundGeometry g = normal_shot();
+  g.projectile_exited = false;
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, g);
+  EXPECT_EQ(m.entrance.face, 2);
+  EXPECT_GT(m.entrance.n_points, 0u);
+  EXPECT_EQ(m.exit.face, -1);
+  EXPECT_EQ(m.exit.n_points, 0u);
+  // A path beside the target crosses no face: no wound on any, no tract.
+  g.path_origin = Vector3(30e-3, -10e-3, 0.0);
+  const WoundMetrics beside = compute_wound_metrics(set.x, set.volume, set.flags, g);
+  EXPECT_EQ(beside.entrance.face, -1);
+  EXPECT_TRUE(beside.tract_area.empty());
+  EXPECT_EQ(beside.counts[3], m.counts[3]);
 }

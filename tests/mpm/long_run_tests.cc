@@ -104,8 +104,12 @@ TEST(MpmLongRun, ARicochetLeavesWhenTheProjectileIsClearOfTheTarget)
             << " m/s\n";
   EXPECT_LT(exit.velocity[1], -0.2 * 2.0);
   EXPECT_GT(exit.velocity[1], -2.0);
-  EXPECT_EQ(analysis::projectile_fate(exit, exit.velocity[1], 2.0),
-            "left the target obliquely, sideways or backwards");
+  EXPECT_EQ(analysis::projectile_fate(exit, false, exit.velocity[1], 2.0),
+            "left the target sideways or backwards");
+  // Its mass centre never passed the slab's far face: no exit wound, and the summary says so.
+  const analysis::WoundSample sample = analysis::collect_wound_sample(solver);
+  EXPECT_FALSE(analysis::left_through_exit_face(sample, solver));
+  EXPECT_EQ(analysis::wound_metrics_of(sample, solver).exit.face, -1);
 }
 } // namespace
 } // namespace vulnus

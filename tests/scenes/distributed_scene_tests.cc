@@ -74,8 +74,8 @@ void expect_same_wound(const nlohmann::json& one, const nlohmann::json& many, co
     const double a = one["failed"][kind].get<double>(), b = many["failed"][kind].get<double>();
     EXPECT_LE(std::abs(a - b), 0.005 * std::max(a, 1.0)) << kind << " on " << n_ranks << " ranks";
   }
-  const double v1 = one["bullet"]["exit_velocity_m_s"].get<double>();
-  EXPECT_NEAR(many["bullet"]["exit_velocity_m_s"].get<double>(), v1, 1e-4 * std::abs(v1));
+  const double v1 = one["bullet"]["velocity_now_m_s"].get<double>();
+  EXPECT_NEAR(many["bullet"]["velocity_now_m_s"].get<double>(), v1, 1e-4 * std::abs(v1));
   EXPECT_NEAR(many["energy"]["balance_error"].get<double>(),
               one["energy"]["balance_error"].get<double>(), 1e-4);
 }
@@ -169,8 +169,8 @@ TEST(DistributedPaperScene, HybridAtTheDefaultsStaysWithinTheRoundOffSpread)
     summaries.push_back(nlohmann::json::parse(read_text(scratch.path / name / "summary.json")));
   }
   const nlohmann::json &one = summaries[0], &two = summaries[1];
-  const double v1 = one["bullet"]["exit_velocity_m_s"].get<double>();
-  EXPECT_NEAR(two["bullet"]["exit_velocity_m_s"].get<double>(), v1, 0.005 * v1);
+  const double v1 = one["bullet"]["velocity_now_m_s"].get<double>();
+  EXPECT_NEAR(two["bullet"]["velocity_now_m_s"].get<double>(), v1, 0.005 * v1);
   for (const char* kind : {"matrix", "total"})
   {
     const double a = one["failed"][kind].get<double>(), b = two["failed"][kind].get<double>();

@@ -26,6 +26,34 @@ nlohmann::json run_and_read_summary(const std::string& deck, const std::string& 
 
 double relative(const double a, const double b) { return std::abs(b - a) / std::abs(a); }
 
+/// The momentum audit closes (bodies now + removed = initial + supports + external, to 1e-6
+/// of the momentum that flowed), and `supports` holds each face's whole reaction: for a hybrid
+/// run the MPM and far-field shares it lists in "hybrid".
+void expect_momentum_audit_closes(const nlohmann::json& summary)
+{
+  const nlohmann::json& audit = summary["momentum_audit"];
+  ASSERT_TRUE(audit.is_object()) << summary.dump();
+  EXPECT_TRUE(audit["closes"].get<bool>()) << audit.dump();
+  EXPECT_LT(audit["relative_imbalance"].get<double>(), 1e-6) << audit.dump();
+  EXPECT_GT(audit["scale_kg_m_s"].get<double>(), 0.0);
+  for (int c = 0; c < 3; ++c)
+  {
+    double faces = 0.0;
+    for (const auto& face : summary["supports"].items())
+      faces += face.value()["impulse_N_s"][c].get<double>();
+    EXPECT_NEAR(faces, audit["support_impulse_N_s"][c].get<double>(),
+                1e-12 * audit["scale_kg_m_s"].get<double>());
+    if (summary.value("method", "") != "hybrid")
+      continue;
+    for (const auto& face : summary["supports"].items())
+      EXPECT_NEAR(face.value()["impulse_N_s"][c].get<double>(),
+                  summary["hybrid"]["mpm_support_impulse_N_s"][face.key()][c].get<double>() +
+                    summary["hybrid"]["fe_support_impulse_N_s"][face.key()][c].get<double>(),
+                  1e-12 * audit["scale_kg_m_s"].get<double>())
+        << face.key();
+  }
+}
+
 TEST(HybridPaperScene, MatchesThePureMpmReferenceWithinFivePercent)
 {
   ScratchDirectory scratch("hybrid_paper");
@@ -65,6 +93,8 @@ TEST(HybridPaperScene, MatchesThePureMpmReferenceWithinFivePercent)
   const double t_fe = hybrid["hybrid"]["fe_time_s"].get<double>();
   EXPECT_GE(t_fe, t_end * (1 - 1e-12));
   EXPECT_LT(t_fe, t_end + 72e-6);
+  expect_momentum_audit_closes(pure);
+  expect_momentum_audit_closes(hybrid);
 }
 
 // A zone too small for a stiff tissue (K = 1e8 Pa): the wound reaches the far field. By
@@ -157,6 +187,7 @@ TEST(PureFeScene, RunsFromItsDeckAndClosesTheEnergyBalance)
   EXPECT_LT(std::abs(s["energy"]["balance_error"].get<double>()), 0.02);
   EXPECT_TRUE(fs::exists(scratch.path / "fe" / "fe_mesh.xdmf"));
   EXPECT_TRUE(fs::exists(scratch.path / "fe" / "history.csv"));
+  expect_momentum_audit_closes(s);
 }
 
 TEST(PureFeScene, RefusesASecondBody)
