@@ -19,7 +19,7 @@ nlohmann::json momentum_audit_json(const MomentumAudit& audit)
           {"external_impulse_N_s", vector_json(audit.external)},
           {"added_kg_m_s", vector_json(audit.added)},
           {"imbalance_kg_m_s", vector_json(audit.imbalance())},
-          {"scale_kg_m_s", audit.scale},
+          {"scale_kg_m_s", audit.scale()},
           {"relative_imbalance", audit.relative_imbalance()},
           {"tolerance", MomentumAudit::tolerance},
           {"closes", audit.closes()}};

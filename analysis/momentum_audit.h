@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -25,13 +26,25 @@ struct MomentumAudit
   Eigen::Vector3d supports = Eigen::Vector3d::Zero(); ///< N s, all faces, MPM and FE
   Eigen::Vector3d external = Eigen::Vector3d::Zero(); ///< N s, gravity and rigid drivers
   Eigen::Vector3d added = Eigen::Vector3d::Zero();    ///< kg m/s, brought in from outside
+  /// Sum of the magnitudes of the support impulses added, N s.
+  double support_magnitudes = 0.0;
+
+  /// Adds one face's support impulse.
+  void add_support(const Eigen::Vector3d& impulse)
+  {
+    supports += impulse;
+    support_magnitudes += impulse.norm();
+  }
   /// Magnitude the imbalance is measured against, kg m/s: the largest of the initial
   /// momentum, the sum of the support impulses' magnitudes, the external and added ones.
-  double scale = 0.0;
+  double scale() const
+  {
+    return std::max({initial.norm(), support_magnitudes, external.norm(), added.norm()});
+  }
 
   /// now + removed - (initial + supports + external + added), kg m/s.
   Eigen::Vector3d imbalance() const { return now + removed - (initial + supports + external + added); }
-  double relative_imbalance() const { return scale > 0.0 ? imbalance().norm() / scale : 0.0; }
+  double relative_imbalance() const { return scale() > 0.0 ? imbalance().norm() / scale() : 0.0; }
   bool closes() const { return relative_imbalance() <= tolerance; }
 };
 

@@ -60,14 +60,8 @@ MomentumAudit mpm_momentum_audit(const mpm::Solver& solver, const mpm::SceneDiag
   audit.removed = solver.removed_momentum();
   audit.external = solver.external_impulse();
   audit.added = solver.added_momentum();
-  double support_magnitudes = 0.0;
   for (const mpm::Vector3& j : supports)
-  {
-    audit.supports += j;
-    support_magnitudes += j.norm();
-  }
-  audit.scale = std::max({audit.initial.norm(), support_magnitudes, audit.external.norm(),
-                          audit.added.norm()});
+    audit.add_support(j);
   return audit;
 }
 
@@ -142,9 +136,8 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
     }
   j["target"] = {{"kinetic_energy_J", target_kinetic},
                  {"momentum_kg_m_s", {target_momentum[0], target_momentum[1], target_momentum[2]}}};
-  static const char* const face_names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
   for (int f = 0; f < 6; ++f)
-    j["supports"][face_names[f]] = {{"condition", face_condition_name(solver.scene().domain_faces[f])},
+    j["supports"][box_face_name(f)] = {{"condition", face_condition_name(solver.scene().domain_faces[f])},
                                     {"impulse_N_s", {supports[f][0], supports[f][1], supports[f][2]}}};
 
   const double initial = solver.initial_energy();

@@ -2,6 +2,7 @@
 #include "simulator/fe_stepper.h"
 
 #include "analysis/momentum_audit.h"
+#include "analysis/wound_metrics.h"
 
 #include "deck/method_checks.h"
 #include "io/run_directory.h"
@@ -138,7 +139,6 @@ nlohmann::json FeStepper::summary(const analysis::RunTotals& totals) const
                        {"balance_error", balance_error(d)}};
   // The supports of every face; the momentum audit (a traction load's impulse is not booked,
   // so a scene with one has no audit).
-  static const char* const face_names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
   analysis::MomentumAudit audit;
   audit.initial = initial_momentum;
   audit.now = Eigen::Vector3d(d.momentum[0], d.momentum[1], d.momentum[2]);
@@ -146,13 +146,12 @@ nlohmann::json FeStepper::summary(const analysis::RunTotals& totals) const
   for (unsigned int f = 0; f < fem::n_slab_faces; ++f)
   {
     const dealii::Tensor<1, 3>& j = d.support_impulses[f];
-    summary["supports"][face_names[f]] = {{"impulse_N_s", {j[0], j[1], j[2]}}};
-    audit.supports += Eigen::Vector3d(j[0], j[1], j[2]);
-    audit.scale += j.norm();
+    summary["supports"][analysis::box_face_name(static_cast<int>(f))] = {
+      {"impulse_N_s", {j[0], j[1], j[2]}}};
+    audit.add_support(Eigen::Vector3d(j[0], j[1], j[2]));
     loaded_by_traction = loaded_by_traction || parameters.faces[f].condition ==
                                                  fem::FaceParameters::Condition::traction;
   }
-  audit.scale = std::max(audit.scale, audit.initial.norm());
   summary["momentum_audit"] =
     loaded_by_traction ? nlohmann::json() : analysis::momentum_audit_json(audit);
   return summary;

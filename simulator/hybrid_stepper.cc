@@ -191,25 +191,24 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
     return {};
   nlohmann::json summary = analysis::mpm_summary(mpm_side, totals, wound, m, supports);
   // One support ledger: each face's supports on both sides, the split kept in "hybrid".
-  static const char* const face_names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
-  analysis::MomentumAudit audit = analysis::mpm_momentum_audit(mpm_side, m, supports);
+  analysis::MomentumAudit audit;
   audit.initial = initial_momentum;
   audit.now = momentum_now; // both sides, and the impulse the next window gives back
-  audit.added.setZero();               // converted far-field material was counted in the FE's
-  double support_magnitudes = 0.0;
+  audit.removed = mpm_side.removed_momentum();
+  audit.external = mpm_side.external_impulse();
+  // Converted far-field material is not added from outside: it was the far field's.
   nlohmann::json mpm_split, fe_split;
   for (unsigned int f = 0; f < fem::n_slab_faces; ++f)
   {
     const mpm::Vector3 fe_impulse(fe.support_impulses[f][0], fe.support_impulses[f][1],
                                   fe.support_impulses[f][2]);
     const mpm::Vector3 total = supports[f] + fe_impulse;
-    summary["supports"][face_names[f]]["impulse_N_s"] = {total[0], total[1], total[2]};
-    mpm_split[face_names[f]] = {supports[f][0], supports[f][1], supports[f][2]};
-    fe_split[face_names[f]] = {fe_impulse[0], fe_impulse[1], fe_impulse[2]};
-    audit.supports += fe_impulse;
-    support_magnitudes += total.norm();
+    const char* const face = analysis::box_face_name(static_cast<int>(f));
+    summary["supports"][face]["impulse_N_s"] = {total[0], total[1], total[2]};
+    mpm_split[face] = {supports[f][0], supports[f][1], supports[f][2]};
+    fe_split[face] = {fe_impulse[0], fe_impulse[1], fe_impulse[2]};
+    audit.add_support(total);
   }
-  audit.scale = std::max({audit.initial.norm(), support_magnitudes, audit.external.norm()});
   summary["momentum_audit"] = analysis::momentum_audit_json(audit);
   const Eigen::Vector3d fe_momentum(fe.momentum[0], fe.momentum[1], fe.momentum[2]);
   summary["target"]["momentum_kg_m_s"] = {
