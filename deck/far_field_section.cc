@@ -22,6 +22,11 @@ void declare_far_field_section(EntryTable& table)
                 "CFL step), implicit Newmark average acceleration, or generalized alpha.");
   table.declare("Element degree", "1", Patterns::Integer(1, 2),
                 "Degree of the Lagrange elements (Q1 or Q2); a hybrid scene needs 1.");
+  table.declare("Volume averaging", "none", Patterns::Selection("none|cell"),
+                "Volumetric part of the elements' deformation: none (each quadrature point its "
+                "own J) or cell (F-bar with the cell's mean J, de Souza Neto et al. 1996): cell "
+                "removes the volumetric locking of nearly incompressible tissue (bulk:shear 1e3 "
+                "and more); docs/locking.md.");
   table.declare("CFL", "0.5", Patterns::Double(0.0, 1.0),
                 "Explicit: Courant number in dt = CFL h_min / c over the cells, in (0, 1].");
   table.declare("Time step", "1e-5", Patterns::Double(0.0),
@@ -72,6 +77,7 @@ void parse_far_field_section(dealii::ParameterHandler& prm, RunParameters& param
                  : integrator == "generalized alpha" ? fem::TimeIntegrator::generalized_alpha
                                                      : fem::TimeIntegrator::central_difference;
   f.degree = static_cast<unsigned int>(prm.get_integer("Element degree"));
+  f.volume_averaging = prm.get("Volume averaging") == "cell";
   f.cfl = prm.get_double("CFL");
   f.time_step = prm.get_double("Time step");
   f.spectral_radius = prm.get_double("Spectral radius");

@@ -3,6 +3,7 @@
 // stay in the mesh, switched off, and the faces they share with live cells join the interface.
 #include "fem/far_field_data.h"
 #include "fem/tensor_conversion.h"
+#include "fem/volume_averaged_cell.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -97,6 +98,20 @@ FarFieldSolver::material_points_inside(const std::array<double, 3>& box_min,
     fe_values.reinit(cell);
     cell->get_dof_indices(dofs);
     evaluate_cell(fe_values, dofs, u, v, d.fe, k);
+    if (d.prm.volume_averaging)
+    {
+      // The points take F_bar, as the law saw it: the cell's mean J (fem/volume_averaged_cell.h).
+      std::vector<Eigen::Matrix3d> F(k.F.size()), F_bar(k.F.size());
+      std::vector<double> w(k.F.size());
+      for (std::size_t q = 0; q < k.F.size(); ++q)
+      {
+        F[q] = to_eigen(k.F[q]);
+        w[q] = fe_values.JxW(q);
+      }
+      volume_averaged_gradients(int(F.size()), F.data(), w.data(), F_bar.data());
+      for (std::size_t q = 0; q < k.F.size(); ++q)
+        k.F[q] = to_dealii(F_bar[q]);
+    }
     const std::size_t first = std::size_t(cell->active_cell_index()) * d.n_q_points;
     for (unsigned int q = 0; q < lattice.size(); ++q)
     {

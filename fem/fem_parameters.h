@@ -116,6 +116,9 @@ struct FeSceneParameters
   unsigned int n_global_refinements = 0;
 
   unsigned int degree = 1; ///< 1 (Q1) or 2 (Q2)
+  /// The law sees F_bar = (J_bar / J)^(1/3) F with the cell's mean J (fem/volume_averaged_cell.h):
+  /// no volumetric locking of nearly incompressible tissue.
+  bool volume_averaging = false;
 
   TimeIntegrator integrator = TimeIntegrator::central_difference;
   double cfl = 0.5;             ///< explicit: dt = cfl * min over cells h / c

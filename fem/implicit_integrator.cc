@@ -3,8 +3,8 @@
 // material, Trilinos CG/GMRES with ML algebraic multigrid (translations as near-null space).
 //   residual  r(u) = f_ext(t_{n+1-af}) - f_int(u_{n+1-af}) - M a_{n+1-am}   (consistent M)
 //   tangent   -dr/du = (1 - af) K_t + (1 - am) / (beta dt^2) M
+#include "fem/cell_stiffness.h"
 #include "fem/far_field_data.h"
-#include "fem/point_tangent.h"
 #include "fem/tensor_conversion.h"
 
 #include <deal.II/base/mpi.h>
@@ -95,12 +95,11 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
   const unsigned int n_dofs = d.fe.n_dofs_per_cell();
   std::vector<types::global_dof_index> dofs(n_dofs);
   const std::vector<unsigned int> component = dof_components(d.fe);
-  std::vector<Tensor<1, 3>> grads(n_dofs);
   std::vector<double> values(n_dofs), u_local(n_dofs), a_local(n_dofs), f_values(n_dofs),
       inertia_values(n_dofs);
   FullMatrix<double> cell_matrix(n_dofs, n_dofs);
   dealii::Vector<double> cell_rhs(n_dofs);
-  materials::PointResponse response;
+  CellStiffness law;
   const materials::FailureParameters* criterion = d.proximity_criterion();
   const bool fibers = d.material->uses_fibers();
   EvaluationSums sums;
@@ -131,57 +130,58 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
     Tensor<2, 3> stress_sum;
     double volume = 0.0, c_max = 0.0, proximity = 0.0;
     unsigned char flags = 0;
+    materials::PointState* states = &d.trial_states[first];
+    std::copy_n(&d.committed_states[first], d.n_q_points, states);
+    try
+    {
+      law.evaluate(fe_values, component, u_local, *d.material, &d.fiber_directions[first], states,
+                   d.prm.volume_averaging);
+    }
+    catch (const std::runtime_error& e)
+    {
+      inverted = true;
+      message = std::string("FE implicit: ") + e.what();
+      break;
+    }
     for (unsigned int q = 0; q < d.n_q_points; ++q)
     {
-      Tensor<2, 3> F = unit_symmetric_tensor<3>();
       Tensor<1, 3> a_q;
       for (unsigned int i = 0; i < n_dofs; ++i)
       {
-        grads[i] = fe_values.shape_grad_component(i, q, component[i]);
         values[i] = fe_values.shape_value_component(i, q, component[i]);
-        F[component[i]] += u_local[i] * grads[i];
         a_q[component[i]] += a_local[i] * values[i];
       }
-      materials::PointState& state = d.trial_states[first + q];
-      state = d.committed_states[first + q];
-      materials::Tangent tangent;
-      const Eigen::Matrix3d F_eigen = to_eigen(F);
-      try
-      {
-        d.material->update(F_eigen, d.fiber_directions[first + q], state, response);
-        tangent = d.material->tangent(F_eigen, d.fiber_directions[first + q], state);
-      }
-      catch (const std::runtime_error& e)
-      {
-        inverted = true;
-        message = std::string("FE implicit: ") + e.what();
-        break;
-      }
-      const double J = determinant(F);
-      const Tensor<2, 3> sigma = to_dealii(response.cauchy_stress);
-      const Tensor<2, 3> P = J * sigma * transpose(invert(F));
-      const double JxW = fe_values.JxW(q);
+      const materials::PointResponse& response = law.responses[q];
+      const double J = law.F_law[q].determinant();
+      const double JxW = law.JxW[q];
       const double rho_JxW = d.prm.density * JxW;
       for (unsigned int i = 0; i < n_dofs; ++i)
       {
         const unsigned int ci = component[i];
-        const double f_int = (P[ci] * grads[i]) * JxW;
-        f_values[i] += f_int;
         inertia_values[i] += rho_JxW * values[i] * a_q[ci];
-        cell_rhs(i) -= f_int + rho_JxW * values[i] * a_q[ci];
+        cell_rhs(i) -= rho_JxW * values[i] * a_q[ci];
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          if (component[j] == ci)
+            cell_matrix(i, j) += mass_factor * rho_JxW * values[i] * values[j];
       }
-      add_point_tangent(tangent, grads, values, component, JxW, d.prm.density, stiffness_factor,
-                        mass_factor, cell_matrix);
       sums.strain_energy += response.energy_density * JxW;
       sums.dissipated += response.dissipated_density * JxW;
-      stress_sum += JxW * sigma;
+      stress_sum += JxW * to_dealii(response.cauchy_stress);
       volume += JxW;
       c_max = std::max(c_max, std::sqrt(response.p_wave_modulus * J / d.prm.density));
-      flags |= state.failure;
+      flags |= states[q].failure;
       if (criterion != nullptr)
-        proximity = std::max(proximity, failure_proximity(*criterion, F_eigen,
+        proximity = std::max(proximity, failure_proximity(*criterion, law.F_law[q],
                                                           fibers ? &d.fiber_directions[first + q]
                                                                  : nullptr));
+    }
+    for (unsigned int i = 0; i < n_dofs; ++i)
+    {
+      const double f_int = law.force(i, component[i]);
+      f_values[i] += f_int;
+      cell_rhs(i) -= f_int;
+      for (unsigned int j = 0; j < n_dofs; ++j)
+        cell_matrix(i, j) += stiffness_factor * law.stiffness(i, j);
     }
     if (inverted)
       break;

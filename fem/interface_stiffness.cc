@@ -3,7 +3,7 @@
 // the rest of the body free) is answered by the forces the interface nodes need; the hybrid
 // coupling builds from it the window's effective interface mass (docs/far_field.md, section 1).
 #include "fem/far_field_data.h"
-#include "fem/point_tangent.h"
+#include "fem/cell_stiffness.h"
 #include "fem/tensor_conversion.h"
 
 #include <deal.II/dofs/dof_tools.h>
@@ -71,10 +71,9 @@ void FarFieldSolver::prepare_interface_stiffness(const double dt)
   const unsigned int n_dofs = d.fe.n_dofs_per_cell();
   std::vector<types::global_dof_index> dofs(n_dofs);
   const std::vector<unsigned int> component = dof_components(d.fe);
-  std::vector<Tensor<1, 3>> grads(n_dofs);
   std::vector<double> values(n_dofs), u_local(n_dofs);
   FullMatrix<double> cell_matrix(n_dofs, n_dofs);
-  materials::PointResponse response;
+  CellStiffness law;
   for (const auto& cell : d.dof_handler.active_cell_iterators())
   {
     if (!d.owns_live(cell))
@@ -89,23 +88,23 @@ void FarFieldSolver::prepare_interface_stiffness(const double dt)
     }
     const std::size_t first = std::size_t(cell->active_cell_index()) * d.n_q_points;
     cell_matrix = 0.0;
+    std::vector<materials::PointState> states(&d.committed_states[first],
+                                              &d.committed_states[first] + d.n_q_points);
+    law.evaluate(fe_values, component, u_local, *d.material, &d.fiber_directions[first],
+                 states.data(), d.prm.volume_averaging);
     for (unsigned int q = 0; q < d.n_q_points; ++q)
     {
-      Tensor<2, 3> F = unit_symmetric_tensor<3>();
+      const double rho_JxW = d.prm.density * fe_values.JxW(q);
       for (unsigned int i = 0; i < n_dofs; ++i)
-      {
-        grads[i] = fe_values.shape_grad_component(i, q, component[i]);
         values[i] = fe_values.shape_value_component(i, q, component[i]);
-        F[component[i]] += u_local[i] * grads[i];
-      }
-      materials::PointState state = d.committed_states[first + q];
-      const Eigen::Matrix3d F_eigen = to_eigen(F);
-      d.material->update(F_eigen, d.fiber_directions[first + q], state, response);
-      const materials::Tangent tangent =
-          d.material->tangent(F_eigen, d.fiber_directions[first + q], state);
-      add_point_tangent(tangent, grads, values, component, fe_values.JxW(q), d.prm.density,
-                        stiffness_factor, mass_factor, cell_matrix);
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          if (component[i] == component[j])
+            cell_matrix(i, j) += mass_factor * rho_JxW * values[i] * values[j];
     }
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      for (unsigned int j = 0; j < n_dofs; ++j)
+        cell_matrix(i, j) += stiffness_factor * law.stiffness(i, j);
     if (touches_interface)
     {
       s->cell_dofs.push_back(dofs);

@@ -3,6 +3,7 @@
 // speed; external forces (tractions, interface forces); energies and external power.
 #include "fem/far_field_data.h"
 #include "fem/tensor_conversion.h"
+#include "fem/volume_averaged_cell.h"
 #include "materials/two_surface_failure.h"
 
 #include <deal.II/base/mpi.h>
@@ -54,9 +55,11 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
 
   struct Scratch
   {
-    std::vector<Tensor<1, 3>> grads;
+    std::vector<Tensor<1, 3>> grads; // [q * n_dofs + i]
     std::vector<double> u_local;
     materials::PointResponse response;
+    std::vector<Eigen::Matrix3d> F, F_law, sigma, P;
+    std::vector<double> JxW;
   };
   // Records the failure of live cell c: the first in cell order is reported.
   auto record_failure = [&](const long c, const std::string& what, std::exception_ptr error)
@@ -99,38 +102,67 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       Tensor<2, 3> F = unit_symmetric_tensor<3>();
       for (unsigned int i = 0; i < n_dofs; ++i)
       {
-        w.grads[i] = fe_values.shape_grad_component(i, q, component[i]);
-        F[component[i]] += w.u_local[i] * w.grads[i];
+        Tensor<1, 3>& grad = w.grads[q * n_dofs + i];
+        grad = fe_values.shape_grad_component(i, q, component[i]);
+        F[component[i]] += w.u_local[i] * grad;
       }
-      const Eigen::Matrix3d F_eigen = to_eigen(F);
+      w.F[q] = to_eigen(F);
+      w.JxW[q] = fe_values.JxW(q);
+    }
+    // The law sees F, or F_bar with the cell's mean dilatation (fem/volume_averaged_cell.h).
+    double j_bar = 0.0;
+    try
+    {
+      if (prm.volume_averaging)
+        j_bar = volume_averaged_gradients(n_q_points, w.F.data(), w.JxW.data(), w.F_law.data());
+      else
+        std::copy_n(w.F.begin(), n_q_points, w.F_law.begin());
+    }
+    catch (const std::runtime_error& e)
+    {
+      record_failure(c, e.what(), nullptr);
+      return Outcome::failed;
+    }
+    for (unsigned int q = 0; q < n_q_points; ++q)
+    {
+      const Eigen::Matrix3d& F_law = w.F_law[q];
       materials::PointState& state = trial_states[first + q];
       state = committed_states[first + q];
       try
       {
-        material->update(F_eigen, fiber_directions[first + q], state, w.response);
+        material->update(F_law, fiber_directions[first + q], state, w.response);
       }
       catch (const std::runtime_error& e)
       {
         record_failure(c, e.what(), nullptr);
         return Outcome::failed;
       }
-      const double J = determinant(F);
-      const Tensor<2, 3> sigma = to_dealii(w.response.cauchy_stress);
-      const Tensor<2, 3> P = J * sigma * transpose(invert(F));
-      const double JxW = fe_values.JxW(q);
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        f_local[i] += (P[component[i]] * w.grads[i]) * JxW;
+      const double J = F_law.determinant();
+      w.sigma[q] = w.response.cauchy_stress;
+      if (!prm.volume_averaging)
+        w.P[q] = J * w.sigma[q] * F_law.inverse().transpose();
+      const double JxW = w.JxW[q];
       r.strain_energy += w.response.energy_density * JxW;
       r.dissipated += w.response.dissipated_density * JxW;
-      stress_sum += JxW * sigma;
+      stress_sum += JxW * to_dealii(w.sigma[q]);
       volume += JxW;
       c_max = std::max(c_max, std::sqrt(w.response.p_wave_modulus * J / prm.density));
       flags |= state.failure;
       if (criterion != nullptr)
-        proximity = std::max(proximity, failure_proximity(*criterion, F_eigen,
+        proximity = std::max(proximity, failure_proximity(*criterion, F_law,
                                                           fibers ? &fiber_directions[first + q]
                                                                  : nullptr));
     }
+    if (prm.volume_averaging)
+      volume_averaged_stresses(n_q_points, w.F.data(), w.JxW.data(), w.sigma.data(), j_bar,
+                               w.P.data());
+    for (unsigned int q = 0; q < n_q_points; ++q)
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        const Tensor<1, 3>& grad = w.grads[q * n_dofs + i];
+        const auto row = w.P[q].row(component[i]);
+        f_local[i] += (row[0] * grad[0] + row[1] * grad[1] + row[2] * grad[2]) * w.JxW[q];
+      }
     cell_stress[k] = stress_sum / volume;
     cell_failure[k] = flags;
     cell_wave_speed[k] = c_max;
@@ -147,7 +179,12 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   const long n_chunks = (n_live + chunk - 1) / chunk;
 #pragma omp parallel reduction(+ : quiet_skipped)
   {
-    Scratch w{std::vector<Tensor<1, 3>>(n_dofs), std::vector<double>(n_dofs), {}};
+    Scratch w;
+    w.grads.resize(std::size_t(n_q_points) * n_dofs);
+    w.u_local.resize(n_dofs);
+    for (auto* v : {&w.F, &w.F_law, &w.sigma, &w.P})
+      v->resize(n_q_points);
+    w.JxW.resize(n_q_points);
 #pragma omp for schedule(dynamic, 1)
     for (long chunk_index = 0; chunk_index < n_chunks; ++chunk_index)
     {

@@ -3,6 +3,7 @@
 #include "mpm/grid_to_particle.h"
 
 #include "mpm/stencil.h"
+#include "mpm/volume_averaging.h"
 
 #include <array>
 #include <cmath>
@@ -58,6 +59,11 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
     }
   }
 }
+/// ln(J_new / J_old) / dt, or `fallback` (the trace of L) where either J is not positive.
+double volume_rate(const double J_old, const double J_new, const double dt, const double fallback)
+{
+  return (J_new > 0.0 && J_old > 0.0) ? std::log(J_new / J_old) / dt : fallback;
+}
 } // namespace
 
 void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
@@ -105,12 +111,15 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                                                 const GridFields& fields,
                                                 const std::vector<Vector3>& gradient_velocity,
                                                 Particles& particles, double* volumetric_rate,
-                                                FailureLimitFlags* limit_flags)
+                                                FailureLimitFlags* limit_flags,
+                                                VolumeAveraging* averaging)
 {
   const std::size_t n_bodies = particles.n_bodies();
   const double dt = s.time_step;
   const bool midpoint = s.deformation_update == DeformationUpdate::midpoint;
   const bool affine = s.affine;
+  if (averaging)
+    averaging->prepare(grid, particles.size());
   with_shape(transfer.shape,
              [&](auto shape_constant)
              {
@@ -147,6 +156,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                  for (long p = begin; p < end; ++p)
                  {
                    Tensor2& F = particles.deformation_gradient[p];
+                   const Vector3 x_start = particles.position[p];
                    Tensor2 L = Tensor2::Zero();
                    Vector3 v = Vector3::Zero();
                    for_each_node<shape>(
@@ -163,7 +173,14 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    // v + dt f / m never reaches the scatter through it.
                    if (affine)
                      particles.affine_velocity[p] = L.cast<float>();
-                   const double J_old = volumetric_rate ? F.determinant() : 0.0;
+                   const double J_old = F.determinant();
+                   if (averaging)
+                   {
+                     averaging->j_old[p] = J_old;
+                     averaging->cell[p] = particles.failure[p] == materials::total_failure
+                                            ? -1
+                                            : VolumeAveraging::cell_key(grid, x_start);
+                   }
                    if (particles.failure[p] == materials::total_failure)
                    {
                      // Debris keeps only its volume (its law reads J alone); the exponential
@@ -179,12 +196,31 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    }
                    else
                      F = (Tensor2::Identity() + dt * L) * F;
-                   if (volumetric_rate)
+                   if (averaging)
                    {
-                     const double J_new = F.determinant();
-                     volumetric_rate[p] =
-                         (J_new > 0.0 && J_old > 0.0) ? std::log(J_new / J_old) / dt : L.trace();
+                     // Rate and limits once the cell has its mean volume change; L's trace
+                     // is the rate's fallback.
+                     if (volumetric_rate)
+                       volumetric_rate[p] = L.trace();
+                     continue;
                    }
+                   if (volumetric_rate)
+                     volumetric_rate[p] = volume_rate(J_old, F.determinant(), dt, L.trace());
+                   if (criterion)
+                     passed[p] = limits_passed(*criterion, fibers, F, particles.fiber_direction[p]);
+                 }
+                 if (!averaging)
+                   continue;
+                 average_volume_changes(begin, end, particles, *averaging);
+                 if (!volumetric_rate && !criterion)
+                   continue;
+#pragma omp parallel for schedule(static)
+                 for (long p = begin; p < end; ++p)
+                 {
+                   const Tensor2& F = particles.deformation_gradient[p];
+                   if (volumetric_rate)
+                     volumetric_rate[p] = volume_rate(averaging->j_old[p], F.determinant(), dt,
+                                                      volumetric_rate[p]);
                    if (criterion)
                      passed[p] = limits_passed(*criterion, fibers, F, particles.fiber_direction[p]);
                  }

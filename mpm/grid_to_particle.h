@@ -10,6 +10,7 @@
 #include "mpm/particles.h"
 #include "mpm/point_shares.h"
 #include "mpm/transfer_settings.h"
+#include "mpm/volume_averaging.h"
 
 #include <vector>
 
@@ -51,10 +52,13 @@ void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
 /// re-projected one for MUSL). Totally failed points (debris, whose law reads J alone) keep
 /// F = J^(1/3) I with J <- J exp(dt tr L), which never inverts. With a non-null volumetric_rate (sized like the points), writes
 /// ln(J_new / J_old) / dt of every point into it. Rigid bodies keep F = I and translate.
+/// With `averaging`, each point's volume change is then replaced by its cell's
+/// (mpm/volume_averaging.h) before the rate and the limit flags are taken.
 void update_deformation_gradients_and_positions(const Grid& grid, const TransferSettings& transfer,
                                                 const KinematicsSettings& settings,
                                                 const GridFields& fields,
                                                 const std::vector<Vector3>& gradient_velocity,
                                                 Particles& particles, double* volumetric_rate,
-                                                FailureLimitFlags* limit_flags = nullptr);
+                                                FailureLimitFlags* limit_flags = nullptr,
+                                                VolumeAveraging* averaging = nullptr);
 } // namespace vulnus::mpm

@@ -95,6 +95,9 @@ struct SceneParameters : scene::SceneDescription
   /// figure by more than a halving of the scene's step does (docs/converged_wound.md).
   double projectile_cfl = 0.4;
   DeformationUpdate deformation_update = DeformationUpdate::midpoint;
+  /// Each step's volume change of a point replaced by its cell's (mpm/volume_averaging.h):
+  /// free of volumetric locking for nearly incompressible tissue.
+  bool cell_volume_averaging = false;
   double artificial_viscosity_linear = 0.0;    ///< bulk viscosity coefficients (0 = off)
   double artificial_viscosity_quadratic = 0.0;
   double max_time_step = 1.0;          ///< s, cap

@@ -383,7 +383,9 @@ void Solver::advance(const double cap)
   update_deformation_gradients_and_positions(grid, transfer, kinematics, fields,
                                              musl ? fields.velocity : fields.velocity_new,
                                              particles, volumetric_rate_or_null(),
-                                             nonlocal_failure ? &failure_limit_flags : nullptr);
+                                             nonlocal_failure ? &failure_limit_flags : nullptr,
+                                             parameters.cell_volume_averaging ? &volume_averaging
+                                                                              : nullptr);
   lap(timings.grid_to_particle);
 
   stress_settings.time_step = dt;
@@ -448,6 +450,15 @@ void Solver::advance(const double cap)
   else
     migrate_points(false);
   lap(timings.checks_and_sorting);
+  if (parameters.cell_volume_averaging)
+  {
+    // Where the points now sit, all of a cell's on this rank: the next forces' pressures.
+    for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+      if (!grid_settings.body_is_rigid[b] && !kinematics.skips(b))
+        average_cell_pressures(grid, long(particles.begin_of(b)), long(particles.end_of(b)),
+                               particles, volume_averaging);
+    lap(timings.stress_update);
+  }
 }
 
 bool Solver::finished() const

@@ -281,6 +281,7 @@ private:
   bool nonlocal_failure = false; ///< a body's law asks for the nonlocal failure criterion
   NonlocalFailureCache nonlocal_cache;
   FailureLimitFlags failure_limit_flags; ///< taken by the deformation update for the criterion
+  VolumeAveraging volume_averaging;      ///< scratch of the cell-averaged volume change
   bool contact_active = false;
   int projectile_body = -1;
   Vector3 flight_axis = Vector3::UnitY();

@@ -75,6 +75,47 @@ void warn_about_narrow_targets(const mpm::SceneParameters& scene, std::vector<st
     warnings.push_back(message.str());
   }
 }
+/// Bulk over small-strain shear modulus of a law, or 0 when it has no such pair (rigid).
+double bulk_over_shear(const materials::MaterialParameters& m)
+{
+  if (m.model == "rigid")
+    return 0.0;
+  if (m.model == "elastic plastic")
+    return m.elastic_plastic.bulk_modulus / m.elastic_plastic.shear_modulus;
+  const double mu = 2.0 * (m.tissue.c1 + m.tissue.c2);
+  return mu > 0.0 ? m.tissue.bulk_modulus / mu : 0.0;
+}
+
+/// A nearly incompressible body on points or elements that each keep their own J: it locks
+/// (docs/locking.md: the shear mode of a square at K / mu = 1e4 rings 5.5 to 6.5 times too fast).
+void warn_about_locking(const deck::RunParameters& parameters, const bool has_mpm_side,
+                        std::vector<std::string>& warnings)
+{
+  constexpr double locking_ratio = 1e3;
+  const bool fe_side = parameters.method == deck::Method::fe || parameters.hybrid.enabled;
+  for (const mpm::BodyParameters& body : parameters.scene.bodies)
+  {
+    const mpm::NamedMaterial* material = mpm::find_material(parameters.scene, body.material);
+    if (material == nullptr)
+      continue;
+    const double ratio = bulk_over_shear(material->parameters);
+    if (ratio < locking_ratio)
+      continue;
+    std::string where;
+    if (has_mpm_side && !parameters.scene.cell_volume_averaging)
+      where = "Grid/Volume averaging";
+    if (fe_side && !parameters.far_field.volume_averaging)
+      where += std::string(where.empty() ? "" : " and ") + "Far field/Volume averaging";
+    if (where.empty())
+      continue;
+    std::ostringstream message;
+    message << "body '" << body.name << "': material '" << body.material << "' has bulk:shear "
+            << ratio << " (>= " << locking_ratio << ") and " << where
+            << " = none: each point keeps its own volume and the tissue locks (too stiff in "
+               "shear, docs/locking.md); set " << where << " = cell";
+    warnings.push_back(message.str());
+  }
+}
 } // namespace
 
 std::vector<std::string> scene_warnings(const deck::RunParameters& parameters, const bool has_mpm_side)
@@ -85,6 +126,7 @@ std::vector<std::string> scene_warnings(const deck::RunParameters& parameters, c
     warn_about_cfl(parameters, warnings);
     warn_about_narrow_targets(parameters.scene, warnings);
   }
+  warn_about_locking(parameters, has_mpm_side, warnings);
   return warnings;
 }
 } // namespace vulnus::simulator

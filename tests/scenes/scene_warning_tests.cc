@@ -1,6 +1,7 @@
 // Warnings before the first step about scenes that run but may mislead: a target narrower
 // than the projectile across its path (issue 25: a 4 mm slab against a 9 mm bullet reported
-// an "exit" with the plug still on the nose).
+// an "exit" with the plug still on the nose), and nearly incompressible tissue whose points
+// keep their own volume (they lock).
 #include "../app/command_runner.h"
 
 #include <nlohmann/json.hpp>
@@ -84,4 +85,25 @@ TEST(SceneWarnings, AnUnsubcycledDeformableProjectileIsFlagged)
   EXPECT_FALSE(mentions(warnings_of(scratch.path / "subcycled"), "not subcycled"));
   EXPECT_NE(read_text(scratch.path / "subcycled" / "log.txt").find("subcycled: substeps"),
             std::string::npos);
+}
+
+TEST(SceneWarnings, NearlyIncompressibleTissueWithoutVolumeAveragingIsFlagged)
+{
+  // K / mu = 2.2e9 / 4200: points that keep their own J lock (docs/locking.md).
+  ScratchDirectory scratch("scene_warning_locking");
+  const std::string stiff =
+    short_paper_run + "--set 'Material tissue/Transversely isotropic hyperelastic/Bulk modulus=2.2e9' "
+                      "--set 'Time/End time=2e-7' ";
+  const CommandResult own = run_vulnus(stiff + "--output own", scratch.path);
+  ASSERT_EQ(own.exit_status, 0) << own.out << own.err;
+  EXPECT_TRUE(mentions(warnings_of(scratch.path / "own"),
+                       "body 'slab': material 'tissue' has bulk:shear 523810"));
+  EXPECT_TRUE(mentions(warnings_of(scratch.path / "own"), "set Grid/Volume averaging = cell"));
+
+  const CommandResult cell =
+    run_vulnus(stiff + "--set 'Grid/Volume averaging=cell' --output cell", scratch.path);
+  ASSERT_EQ(cell.exit_status, 0) << cell.out << cell.err;
+  EXPECT_FALSE(mentions(warnings_of(scratch.path / "cell"), "bulk:shear"));
+  // The bullet (bulk:shear 2.2) is not flagged.
+  EXPECT_FALSE(mentions(warnings_of(scratch.path / "own"), "'bullet'"));
 }
