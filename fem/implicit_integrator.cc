@@ -183,8 +183,6 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
       for (unsigned int j = 0; j < n_dofs; ++j)
         cell_matrix(i, j) += stiffness_factor * law.stiffness(i, j);
     }
-    if (inverted)
-      break;
     d.cell_stress[k] = stress_sum / volume;
     d.cell_failure[k] = flags;
     d.cell_wave_speed[k] = c_max;

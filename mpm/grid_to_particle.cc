@@ -173,7 +173,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    // v + dt f / m never reaches the scatter through it.
                    if (affine)
                      particles.affine_velocity[p] = L.cast<float>();
-                   const double J_old = F.determinant();
+                   const double J_old = (volumetric_rate || averaging) ? F.determinant() : 0.0;
                    if (averaging)
                    {
                      averaging->j_old[p] = J_old;
