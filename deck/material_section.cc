@@ -61,8 +61,19 @@ void declare_tissue(EntryTable& table, const materials::TissueParameters& d, con
                   "Fiber stretch lambda* where fibers straighten [-]; >= 1 (the paper: 1.4).");
   }
   table.declare("Bulk modulus", format_number(d.bulk_modulus), Patterns::Double(0.0),
-                "Bulk modulus K in U(J) = K/2 (ln J)^2 [Pa] (default 200 kPa; 100 kPa and "
-                "100 MPa are studied too).");
+                "Bulk modulus K [Pa] of the volumetric energy (the paper: 200 kPa; water and "
+                "soft tissue: about 2.2 GPa, inputs/water).");
+  table.declare("Volumetric law",
+                d.volumetric_law == materials::VolumetricLawKind::hugoniot ? "Hugoniot"
+                                                                           : "logarithmic",
+                Patterns::Selection("logarithmic|Hugoniot"),
+                "Volumetric energy U(J): logarithmic, U = K/2 (ln J)^2 (the paper's); Hugoniot, "
+                "compression on the linear shock Hugoniot Us = c0 + s up of water-like tissue "
+                "(c0^2 = K / rho0, s = Hugoniot slope; tension logarithmic; "
+                "docs/volumetric_law.md).");
+  table.declare("Hugoniot slope", format_number(d.hugoniot_slope), Patterns::Double(0.0),
+                "Slope s of the shock Hugoniot Us = c0 + s up [-], Volumetric law = Hugoniot "
+                "only; 0.5 to 4 (10 % gelatin: 2, Zochowski 2019).");
   table.enter("Failure");
   table.declare("Enabled", d.failure.enabled ? "true" : "false", Patterns::Bool(),
                 "Two-surface failure of matrix and fibers (paper eqs. 5-6).");
@@ -103,6 +114,9 @@ void parse_tissue(ParameterHandler& prm, materials::TissueParameters& t, const b
   else
     t.c3 = t.c5 = 0.0;
   t.bulk_modulus = prm.get_double("Bulk modulus");
+  t.volumetric_law = prm.get("Volumetric law") == "Hugoniot" ? materials::VolumetricLawKind::hugoniot
+                                                             : materials::VolumetricLawKind::logarithmic;
+  t.hugoniot_slope = prm.get_double("Hugoniot slope");
   prm.enter_subsection("Failure");
   t.failure.enabled = prm.get_bool("Enabled");
   const std::string measure = prm.get("Shear measure");

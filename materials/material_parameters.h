@@ -15,6 +15,13 @@ enum class ShearMeasure
   log_stretch_ratio                ///< ln(l1 / l3) of the principal stretches
 };
 
+/// The tissue's volumetric energy (materials/volumetric_law.h).
+enum class VolumetricLawKind
+{
+  logarithmic, ///< U = K/2 (ln J)^2 (the paper's)
+  hugoniot     ///< compression on the linear shock Hugoniot Us = c0 + s up, K = rho0 c0^2
+};
+
 /// Two-surface failure (paper eqs. 5-6).
 struct FailureParameters
 {
@@ -38,7 +45,9 @@ struct TissueParameters
   double c4 = 22.0;              ///< -, rate of uncrimping
   double c5 = 100.0e3;           ///< Pa, modulus of straightened fibers
   double lambda_star = 1.4;      ///< fiber stretch where fibers straighten, >= 1
-  double bulk_modulus = 200.0e3; ///< Pa, U(J) = K/2 (ln J)^2
+  double bulk_modulus = 200.0e3; ///< Pa, U''(1) of the volumetric law
+  VolumetricLawKind volumetric_law = VolumetricLawKind::logarithmic;
+  double hugoniot_slope = 2.0;   ///< s of Us = c0 + s up (Hugoniot law only)
   FailureParameters failure;
 };
 

@@ -46,7 +46,7 @@ template <bool with_fibers>
 TissueHyperelastic<with_fibers>::TissueHyperelastic(const TissueParameters& parameters)
     : prm(parameters), fibers(with_fibers ? parameters.c3 : 0.0, parameters.c4,
                               with_fibers ? parameters.c5 : 0.0, parameters.lambda_star),
-      small_strain_shear_modulus(2.0 * (parameters.c1 + parameters.c2))
+      volumetric(parameters), small_strain_shear_modulus(2.0 * (parameters.c1 + parameters.c2))
 {
   prm.with_fibers = with_fibers;
 }
@@ -66,7 +66,6 @@ void TissueHyperelastic<with_fibers>::kirchhoff_parts(const Matrix3<Scalar>& F, 
                                                       TissueStressParts* energies) const
 {
   using std::cbrt;
-  using std::log;
   using std::sqrt;
   const Matrix3<Scalar> identity = Matrix3<Scalar>::Identity();
   const Scalar J = F.determinant();
@@ -78,10 +77,9 @@ void TissueHyperelastic<with_fibers>::kirchhoff_parts(const Matrix3<Scalar>& F, 
     energies->J = value_of(J);
 
   const bool matrix_intact = !(failure_flags & matrix_failed);
-  const Scalar ln_J = log(J);
   if (matrix_intact)
   {
-    tau_volumetric = (prm.bulk_modulus * ln_J) * identity;
+    tau_volumetric = volumetric.kirchhoff_pressure_term(J) * identity;
     const Matrix3<Scalar> B_bar = (J_minus_third * J_minus_third) * (F * F.transpose());
     const Scalar I1 = B_bar.trace();
     if (energies)
@@ -102,15 +100,15 @@ void TissueHyperelastic<with_fibers>::kirchhoff_parts(const Matrix3<Scalar>& F, 
         energies->matrix_energy = prm.c1 * (value_of(I1) - 3.0);
     }
     if (energies)
-      energies->volumetric_energy = 0.5 * prm.bulk_modulus * value_of(ln_J * ln_J);
+      energies->volumetric_energy = volumetric.energy(value_of(J));
   }
   else if (value_of(J) < 1.0)
   {
     // Failed tissue is debris: it keeps the pressure of the volumetric law in compression
-    // (U = K/2 (ln J)^2 for J < 1, 0 beyond: C1 at J = 1), so it is never crushed.
-    tau_volumetric = (prm.bulk_modulus * ln_J) * identity;
+    // (U(J) for J < 1, 0 beyond: C1 at J = 1), so it is never crushed.
+    tau_volumetric = volumetric.kirchhoff_pressure_term(J) * identity;
     if (energies)
-      energies->volumetric_energy = 0.5 * prm.bulk_modulus * value_of(ln_J * ln_J);
+      energies->volumetric_energy = volumetric.energy(value_of(J));
   }
 
   if constexpr (with_fibers)
@@ -175,7 +173,7 @@ double TissueHyperelastic<with_fibers>::wave_modulus(const double J, const doubl
   double modulus = 0.0;
   const bool matrix_intact = !(flags & matrix_failed);
   if (matrix_intact || J < 1.0)
-    modulus += std::max(prm.bulk_modulus * (1.0 - std::log(J)) / J, 0.0);
+    modulus += std::max(volumetric.tangent_bulk_modulus(J), 0.0);
   if (matrix_intact)
     modulus += 4.0 / 3.0 * 2.0 * (prm.c1 + prm.c2 * I1) * I1 / (3.0 * J);
   if constexpr (with_fibers)
@@ -289,6 +287,10 @@ void check_tissue(const MaterialParameters& parameters, const bool with_fibers,
           "give the second Mooney-Rivlin constant in Pa, e.g. 0");
   require(finite(t.bulk_modulus) && t.bulk_modulus > 0.0, "Bulk modulus", t.bulk_modulus,
           "must be positive", "give K in Pa, e.g. 200e3");
+  if (t.volumetric_law == VolumetricLawKind::hugoniot)
+    require(finite(t.hugoniot_slope) && t.hugoniot_slope >= 0.5 && t.hugoniot_slope <= 4.0,
+            "Hugoniot slope", t.hugoniot_slope, "must lie in [0.5, 4]",
+            "give s of the shock Hugoniot Us = c0 + s up, e.g. 2 for 10 % gelatin");
   if (with_fibers)
   {
     require(finite(t.c3) && t.c3 >= 0.0, "c3", t.c3, "must be zero or positive",
@@ -319,8 +321,9 @@ void check_tissue(const MaterialParameters& parameters, const bool with_fibers,
 }
 
 const std::string common_documentation =
-    " W = c1 (I1~ - 3) + c2 (I2~ - 3) + K/2 (ln J)^2 [+ F2(lambda~)]; entries c1, c2 (Pa), "
-    "Bulk modulus (Pa); two-surface failure (paper eqs. 5-6): Matrix shear limit (default 0.5, "
+    " W = c1 (I1~ - 3) + c2 (I2~ - 3) + U(J) [+ F2(lambda~)]; entries c1, c2 (Pa), "
+    "Bulk modulus (Pa), Volumetric law (logarithmic: U = K/2 (ln J)^2; Hugoniot: compression "
+    "on the shock Hugoniot Us = c0 + s up, c0^2 = K/rho0, entry Hugoniot slope s); two-surface failure (paper eqs. 5-6): Matrix shear limit (default 0.5, "
     "measure E1-E3, (E1-E3)/2 or ln(l1/l3)) zeroes matrix stress and tension pressure (failed "
     "tissue keeps its pressure in compression; the fibers of a failed matrix carry f a (x) a on "
     "the total stretch), Fiber stretch limit (default 1.4, total stretch |F a0|) zeroes fiber "
@@ -345,7 +348,7 @@ const bool transversely_isotropic_registered = register_material_model(
 const bool isotropic_registered = register_material_model(
     "isotropic hyperelastic",
     "Isotropic variant of the tissue law (no fiber term, no fiber work): uncoupled Mooney-Rivlin "
-    "with logarithmic volumetric energy." +
+    "with the same volumetric energy." +
         common_documentation,
     [](const MaterialParameters& parameters) -> std::unique_ptr<Material>
     { return std::make_unique<IsotropicHyperelastic>(parameters.tissue); },

@@ -4,6 +4,7 @@
 
 #include "materials/material.h"
 #include "materials/material_parameters.h"
+#include "materials/volumetric_law.h"
 #include "materials/weiss_fiber_law.h"
 
 #include <cstdint>
@@ -36,14 +37,14 @@ struct TissueStressParts
 /// the two-surface failure of the paper (eqs. 5-6). With J = det F, B~ = J^{-2/3} F F^T,
 /// I1~ = tr B~, I2~ = (I1~^2 - tr B~^2)/2, lambda~ = |J^{-1/3} F a0|, a = J^{-1/3} F a0 / lambda~:
 ///
-///   W = c1 (I1~ - 3) + c2 (I2~ - 3) + F2(lambda~) + K/2 (ln J)^2
-///   sigma_vol    = (K ln J / J) I
+///   W = c1 (I1~ - 3) + c2 (I2~ - 3) + F2(lambda~) + U(J)
+///   sigma_vol    = U'(J) I  (U = K/2 (ln J)^2, or the Hugoniot law: VolumetricLaw)
 ///   sigma_matrix = (2/J) [(c1 + c2 I1~) B~ - c2 B~^2 - (c1 I1~ + 2 c2 I2~)/3 I]
 ///   sigma_fibers = (1/J) f(lambda~) (a (x) a - I/3),   f = lambda dF2/dlambda (WeissFiberLaw)
 ///
 /// Fibers carry no compression (f = 0 for lambda~ < 1). Failure (irreversible, flags in
 /// PointState::failure): a failed matrix zeroes sigma_matrix, and sigma_vol in tension (failed
-/// tissue is debris that still resists compression: sigma_vol = K ln J / J for J < 1); its
+/// tissue is debris that still resists compression: sigma_vol = U'(J) I for J < 1); its
 /// fibers then carry their full uniaxial stress (1/J) f(lambda) a (x) a on the total stretch
 /// lambda = |F a0| (nothing balances the -f/3 I of the uncoupled form once the matrix is gone).
 /// Failed fibers zero sigma_fibers. energy_density counts only what the surviving parts store;
@@ -54,7 +55,7 @@ struct TissueStressParts
 /// isotropic Mooney-Rivlin variant ("isotropic hyperelastic"), which does no fiber work.
 ///
 /// P-wave modulus (time step): M = max(K_t, 0) + 4/3 G_t + (lambda f' + f)/J, with
-/// K_t = J U''(J) = K (1 - ln J)/J (negative for J > e, hence clamped),
+/// K_t = J U''(J) (logarithmic: K (1 - ln J)/J, negative for J > e, hence clamped),
 /// G_t = 2 (c1 + c2 I1~) I1~ / (3 J) and the fiber term while fibers are intact and
 /// stretched; an intact point never reports less than 4/3 mu0, mu0 = 2 (c1 + c2). A failed
 /// matrix keeps K_t only in compression and drops G_t: debris in tension has no wave.
@@ -106,6 +107,7 @@ private:
 
   TissueParameters prm;
   WeissFiberLaw fibers;
+  VolumetricLaw volumetric;
   double small_strain_shear_modulus; ///< mu0 = 2 (c1 + c2)
 };
 

@@ -63,15 +63,16 @@ def completed_summary(directory):
     return summary if summary.get("completed") else None
 
 
-def run_once(deck, directory, settings):
-    """Runs `vulnus run deck` with the --set entries into `directory` unless a completed run
-    is there; returns its summary, or None when it did not complete. No particle series is
-    written (the figures are in summary.json) unless the settings ask for one."""
+def run_once(deck, directory, settings, options=()):
+    """Runs `vulnus run deck` with the --set entries (and the command-line `options`) into
+    `directory` unless a completed run is there; returns its summary, or None when it did not
+    complete. No particle series is written (the figures are in summary.json) unless the
+    settings ask for one."""
     summary = completed_summary(directory)
     if summary:
         return summary
     subprocess.run(["rm", "-rf", directory], check=True)
-    command = [VULNUS, "run", deck, "--output", directory]
+    command = [VULNUS, "run", deck, "--output", directory] + list(options)
     for entry in ["Output/Particle output interval=0"] + list(settings):
         command += ["--set", entry]
     print("$ " + shlex.join(command), flush=True)
