@@ -43,6 +43,30 @@ nlohmann::json face_json(const FaceWound& w)
           {"failed_points", w.n_points},
           {"area_m2", w.area}};
 }
+/// How deep the projectile went: its nose below the target's entrance plane (the plane of the
+/// target's nearest points at the start), the deepest it reached and when, whether it stopped
+/// (or turned back) inside, and the velocity-depth curve sampled every quarter cell of depth.
+nlohmann::json penetration_json(const mpm::ProjectilePenetration& p)
+{
+  nlohmann::json curve = {{"time_s", nlohmann::json::array()},
+                          {"depth_m", nlohmann::json::array()},
+                          {"velocity_m_s", nlohmann::json::array()}};
+  for (const mpm::PenetrationSample& s : p.curve())
+  {
+    curve["time_s"].push_back(s.time);
+    curve["depth_m"].push_back(s.depth);
+    curve["velocity_m_s"].push_back(s.speed);
+  }
+  const bool stopped = p.stopped();
+  return {{"depth_m", p.latest().depth},
+          {"max_depth_m", p.max_depth()},
+          {"max_depth_time_s", p.max_depth_time()},
+          {"stopped", stopped},
+          {"stop_time_s", stopped ? nlohmann::json(p.stop().time) : nlohmann::json()},
+          {"stop_depth_m", stopped ? nlohmann::json(p.stop().depth) : nlohmann::json()},
+          {"stop_velocity_m_s", stopped ? nlohmann::json(p.stop().speed) : nlohmann::json()},
+          {"curve", curve}};
+}
 } // namespace
 
 double accounted_energy(const mpm::Solver& solver, const mpm::SceneDiagnostics& d)
@@ -114,6 +138,7 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
     bullet["max_von_mises_over_yield"] = solver.peak_von_mises_over_yield()[projectile];
     bullet["position_m"] = {b.centroid[0], b.centroid[1], b.centroid[2]};
     bullet["rigid"] = solver.body_material(projectile).is_rigid();
+    j["penetration"] = penetration_json(solver.penetration());
     // Fastest point of the other bodies over the run, against the projectile's initial speed.
     double fastest = 0.0;
     for (std::size_t other = 0; other < solver.peak_point_speeds().size(); ++other)

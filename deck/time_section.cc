@@ -52,6 +52,13 @@ void declare_time_section(EntryTable& table)
                 "blow-up and keeps its last good state; 0 switches the stop off.");
   table.declare("Stop when projectile exits", "true", Patterns::Bool(),
                 "Stop once the projectile's tail has left every other body, before t_end.");
+  table.declare("Stop when projectile stops", "false", Patterns::Bool(),
+                "Stop once the projectile, its nose inside the target, has slowed to the "
+                "Projectile stop speed along its flight or turned back, before t_end "
+                "(penetration runs: summary.json's penetration.depth_m is then its depth at rest).");
+  table.declare("Projectile stop speed", "1", Patterns::Double(0.0),
+                "Speed [m/s] along the flight at or below which Stop when projectile stops ends "
+                "the run; >= 0 (0: only when it turns back).");
   table.leave();
 }
 
@@ -68,6 +75,8 @@ void parse_time_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   scene.max_time_step = prm.get_double("Maximum time step");
   scene.min_time_step = prm.get_double("Minimum time step");
   scene.stop_when_projectile_exits = prm.get_bool("Stop when projectile exits");
+  scene.stop_when_projectile_stops = prm.get_bool("Stop when projectile stops");
+  scene.projectile_stop_speed = prm.get_double("Projectile stop speed");
   energy_guard.warning = prm.get_double("Energy balance warning");
   energy_guard.limit = prm.get_double("Energy balance limit");
   prm.leave_subsection();

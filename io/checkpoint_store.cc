@@ -17,9 +17,11 @@ namespace
 {
 using namespace mpm::binary;
 
-// Format 2 added the mesh output list; format 1 files are refused by name.
-constexpr char header_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '2'};
+// Format 2 added the mesh output list, format 3 the temporary cavity's record; older files
+// are refused by name.
+constexpr char header_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '3'};
 constexpr char format_1_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '1'};
+constexpr char format_2_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '2'};
 constexpr char trailer_tag[8] = {'V', 'U', 'L', 'N', 'E', 'N', 'D', '1'};
 constexpr const char* prefix = "step_";
 constexpr const char* suffix = ".chk";
@@ -48,6 +50,7 @@ std::string CheckpointStore::write(const std::uint64_t step, const RunProgress& 
                           put(out, progress.wall_seconds);
                           put_text(out, progress.output_records);
                           put_text(out, progress.mesh_output_records);
+                          put_vector(out, progress.cavity_record);
                           write_state(out);
                           out.write(trailer_tag, sizeof(trailer_tag));
                         });
@@ -114,6 +117,9 @@ RunProgress CheckpointStore::read_newest(const std::function<void(std::istream&)
       if (in && std::equal(tag, tag + sizeof(tag), format_1_tag))
         throw std::runtime_error("it was written by an older vulnus (checkpoint format 1, "
                                  "without the mesh output list)");
+      if (in && std::equal(tag, tag + sizeof(tag), format_2_tag))
+        throw std::runtime_error("it was written by an older vulnus (checkpoint format 2, "
+                                 "without the temporary cavity's record)");
       if (!in || !std::equal(tag, tag + sizeof(tag), header_tag))
         throw std::runtime_error("it is not a vulnus run checkpoint");
       RunProgress progress;
@@ -123,6 +129,7 @@ RunProgress CheckpointStore::read_newest(const std::function<void(std::istream&)
       get(in, progress.wall_seconds);
       get_text(in, progress.output_records);
       get_text(in, progress.mesh_output_records);
+      get_vector(in, progress.cavity_record);
       read_state(in);
       expect_tag(in, trailer_tag, "it is incomplete (no end tag)");
       path = candidate;

@@ -22,6 +22,7 @@ struct RunProgress
   double wall_seconds = 0.0;      ///< wall time spent up to the checkpoint
   std::string output_records;      ///< XdmfSeries::save_records of the particles
   std::string mesh_output_records; ///< XdmfSeries::save_records of the FE mesh
+  std::vector<double> cavity_record; ///< analysis::TemporaryCavity::packed
 };
 
 class CheckpointStore

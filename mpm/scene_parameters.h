@@ -105,6 +105,10 @@ struct SceneParameters : scene::SceneDescription
   unsigned int sort_interval = 50;     ///< steps between re-sorting particles by cell
   unsigned int n_threads = 0;          ///< 0: all available
   bool stop_when_projectile_exits = true;
+  /// End the run once the projectile, inside the target, has slowed to stop_speed (m/s) along
+  /// its flight or turned back (Time/Stop when projectile stops).
+  bool stop_when_projectile_stops = false;
+  double projectile_stop_speed = 1.0;
   /// Points that leave the grid: removed (their energy and momentum booked as outflow) or,
   /// when false, the run stops as a blow-up.
   bool remove_points_leaving_grid = false;

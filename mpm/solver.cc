@@ -113,11 +113,19 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
     const Vector3 v0 = scene.bodies[projectile_body].initial_velocity;
     flight_axis = v0.norm() > 0 ? Vector3(v0.normalized()) : Vector3::UnitY();
     exit_plane = -std::numeric_limits<double>::max();
+    entrance_plane = std::numeric_limits<double>::max();
     for (std::size_t b = 0; b < n_bodies; ++b)
       if (static_cast<int>(b) != projectile_body)
         for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
-          exit_plane = std::max(exit_plane, particles.position[p].dot(flight_axis));
+        {
+          const double along = particles.position[p].dot(flight_axis);
+          exit_plane = std::max(exit_plane, along);
+          entrance_plane = std::min(entrance_plane, along);
+        }
     exit_plane = ranks.max(exit_plane);
+    entrance_plane = ranks.min(entrance_plane);
+    nose_offset = 0.5 * scene.cell_size / scene.bodies[projectile_body].particles_per_cell;
+    penetration_record = ProjectilePenetration(0.25 * scene.cell_size);
   }
 
   // Initial stresses and wave speeds (non-zero when a body starts deformed is not supported:
@@ -439,6 +447,7 @@ void Solver::advance(const double cap)
   if (const RunFailure failure = ranks.first_failure(rigid_face_problem()); !failure.empty())
     throw BlowUp(failure);
   record_projectile_exit();
+  record_penetration();
   if (parameters.remove_points_leaving_grid)
     remove_points_outside_grid();
   check_state();
@@ -464,6 +473,8 @@ void Solver::advance(const double cap)
 bool Solver::finished() const
 {
   if (current_time >= parameters.end_time * (1.0 - 1e-12))
+    return true;
+  if (parameters.stop_when_projectile_stops && penetration_record.stopped())
     return true;
   return stops_at_projectile_exit() && exit_record.recorded;
 }

@@ -16,6 +16,7 @@
 #include "mpm/nonlocal_failure.h"
 #include "mpm/particle_to_grid.h"
 #include "mpm/particles.h"
+#include "mpm/projectile_penetration.h"
 #include "mpm/projectile_subcycle.h"
 #include "mpm/rank_group.h"
 #include "mpm/scene_parameters.h"
@@ -30,6 +31,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vulnus::mpm
@@ -153,6 +155,9 @@ public:
   int projectile() const { return projectile_body; }
   /// Axis of the projectile's flight (unit), or +y when there is no projectile.
   const Vector3& flight_direction() const { return flight_axis; }
+  /// The target's extent along the flight axis at the start: the smallest and the largest
+  /// x . flight_direction() of its points (the entrance and exit planes of a normal shot).
+  std::pair<double, double> target_extent_along_flight() const { return {entrance_plane, exit_plane}; }
   /// Force the other bodies exert on each body in the last step (N).
   const std::vector<Vector3>& contact_forces() const { return grid_result.contact_force; }
   /// Kinetic energy removed by contact since the start (J).
@@ -171,6 +176,9 @@ public:
   /// The projectile's state when its tail passed the exit plane (recorded once, also when the
   /// run goes on after it).
   const ProjectileExit& projectile_exit() const { return exit_record; }
+  /// The projectile's depth below the target's entrance plane, step by step, and whether it
+  /// stopped or turned back in the target (mpm/projectile_penetration.h).
+  const ProjectilePenetration& penetration() const { return penetration_record; }
   /// Impulse the domain faces' supports gave the deformable bodies since the start, by face
   /// (x-, x+, y-, y+, z-, z+), N s. Collective.
   std::array<Vector3, 6> support_impulses() const;
@@ -239,6 +247,8 @@ private:
   /// Collective: records the projectile's exit the first time its tail passes the exit plane
   /// or it comes clear of the target (after having been near it).
   void record_projectile_exit();
+  /// Collective: the projectile's nose depth and forward speed into the penetration record.
+  void record_penetration();
   /// Collective: whether a projectile point lies within a cell of the box holding the target's
   /// points that still carry stress (debris, totally failed, is left out).
   bool projectile_near_target() const;
@@ -287,6 +297,8 @@ private:
   Vector3 flight_axis = Vector3::UnitY();
   double exit_plane = 0.0; ///< largest x . flight_axis of the other bodies at the start
   bool projectile_reached_target = false; ///< a projectile point has been near the target
+  double entrance_plane = 0.0; ///< smallest x . flight_axis of the other bodies at the start
+  double nose_offset = 0.0;    ///< half the projectile's point spacing: its front beyond its points
 
   double current_time = 0.0;
   double time_step = 0.0;
@@ -303,6 +315,7 @@ private:
   Vector3 outflow_momentum = Vector3::Zero();
   std::vector<DepartedPoint> departed;
   ProjectileExit exit_record;
+  ProjectilePenetration penetration_record;
   /// Support impulses of this rank's nodes since the start.
   std::array<Vector3, 6> support_impulse_here = {Vector3::Zero(), Vector3::Zero(), Vector3::Zero(),
                                                  Vector3::Zero(), Vector3::Zero(), Vector3::Zero()};

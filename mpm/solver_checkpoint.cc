@@ -14,7 +14,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '6'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '7'};
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -55,6 +55,7 @@ void Solver::save(std::ostream& out) const
   put(out, exit_record.position);
   put(out, static_cast<std::uint64_t>(exit_record.past_exit_plane));
   put(out, static_cast<std::uint64_t>(projectile_reached_target));
+  put_vector(out, penetration_record.packed());
   for (const Vector3& impulse : support_impulse_here)
     put(out, impulse);
   put(out, static_cast<std::uint64_t>(ranks.size()));
@@ -115,6 +116,8 @@ void Solver::restore(std::istream& in)
   std::uint64_t past_exit_plane = 0, reached_target = 0;
   get(in, past_exit_plane);
   get(in, reached_target);
+  std::vector<double> penetration_packed;
+  get_vector(in, penetration_packed);
   exit_loaded.recorded = exit_recorded != 0;
   exit_loaded.past_exit_plane = past_exit_plane != 0;
   std::array<Vector3, 6> supports_loaded;
@@ -181,6 +184,7 @@ void Solver::restore(std::istream& in)
                         departed_packed[k + 3], static_cast<std::uint8_t>(departed_packed[k + 4]),
                         static_cast<std::uint32_t>(departed_packed[k + 5])});
   exit_record = exit_loaded;
+  penetration_record.unpack(penetration_packed);
   projectile_reached_target = reached_target != 0;
   support_impulse_here = supports_loaded;
 }

@@ -1,7 +1,9 @@
 // What a run that goes on past the projectile's exit needs to report: the projectile's state
-// when it left the target, and the impulse the domain faces' supports gave the target.
+// when it left the target, how deep it went (and whether it stopped), and the impulse the
+// domain faces' supports gave the target.
 #include "mpm/solver.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace vulnus::mpm
@@ -70,6 +72,26 @@ void Solver::record_projectile_exit()
     exit_record.position = Vector3(sums[5], sums[6], sums[7]) / sums[0];
   }
   exit_record.kinetic_energy = sums[4];
+}
+
+void Solver::record_penetration()
+{
+  if (projectile_body < 0 || particles.n_bodies() < 2)
+    return;
+  double nose = -std::numeric_limits<double>::max();
+  double sums[2] = {0.0, 0.0}; // momentum along the flight, mass
+  for (std::size_t p = particles.begin_of(projectile_body); p < particles.end_of(projectile_body); ++p)
+  {
+    nose = std::max(nose, particles.position[p].dot(flight_axis));
+    sums[0] += particles.mass[p] * particles.velocity[p].dot(flight_axis);
+    sums[1] += particles.mass[p];
+  }
+  nose = ranks.max(nose);
+  ranks.sum(sums, 2);
+  if (!(sums[1] > 0.0))
+    return;
+  penetration_record.record(current_time, nose + nose_offset - entrance_plane, sums[0] / sums[1],
+                            parameters.projectile_stop_speed);
 }
 
 std::array<Vector3, 6> Solver::support_impulses() const

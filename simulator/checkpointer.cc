@@ -16,7 +16,7 @@ namespace
 /// run from its last checkpoint with a smaller CFL).
 const std::vector<std::string> restart_may_change = {
   "Output/", "Run/Threads", "Time/End time", "Time/CFL", "Time/Maximum time step",
-  "Time/Stop when projectile exits"};
+  "Time/Stop when projectile exits", "Time/Stop when projectile stops", "Time/Projectile stop speed"};
 
 /// Each rank of a distributed run keeps its own checkpoints in checkpoints/rank_R.
 std::string checkpoint_folder(const mpm::RankGroup& ranks)

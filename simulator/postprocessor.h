@@ -27,6 +27,8 @@ public:
   virtual void flush() {}
   /// How far this postprocessor has got, into the checkpoint's progress.
   virtual void save_progress(io::RunProgress& progress) const = 0;
+  /// What it adds to summary.json (rank 0 writes it; its records are complete there).
+  virtual void add_to_summary(nlohmann::json& /*summary*/) const {}
   /// Where the last state it wrote can be found ("" when it keeps none).
   virtual std::string last_state() const { return {}; }
 };

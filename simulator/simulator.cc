@@ -6,6 +6,7 @@
 #include "mpm/rank_group.h"
 #include "mpm/solver.h"
 #include "io/summary_json.h"
+#include "simulator/cavity_recorder.h"
 #include "simulator/checkpointer.h"
 #include "simulator/energy_guard.h"
 #include "simulator/failure_report.h"
@@ -46,6 +47,8 @@ std::vector<std::unique_ptr<Postprocessor>> postprocessors_of(Stepper& stepper,
   if (stepper.mpm_side() != nullptr)
     list.push_back(std::make_unique<ParticleSeries>(
       directory.path(), parameters.output.particle_interval, end, stepper.communicator()));
+  if (stepper.mpm_side() != nullptr)
+    list.push_back(std::make_unique<CavityRecorder>());
   if (stepper.fe_side() != nullptr)
     list.push_back(
       std::make_unique<MeshSeries>(directory.path(), parameters.output.particle_interval, end,
@@ -232,6 +235,8 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
     totals.warnings.push_back(w);
   }
   nlohmann::json summary = stepper.summary(totals); // collective
+  for (const auto& p : postprocessors)
+    p->add_to_summary(summary);
   const int status = stop_signal != 0 ? 128 + stop_signal : totals.completed ? 0 : 1;
   if (!directory.writes_files())
     return status;

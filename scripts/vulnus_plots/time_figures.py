@@ -1,5 +1,6 @@
-"""Line plots of a run: the tract cross-section against depth (summary.json) and the
-energies, bullet velocity and failed counts against time (history.csv)."""
+"""Line plots of a run: the tract cross-section, the projectile's velocity and the temporary
+cavity against depth (summary.json), and the energies, bullet velocity and failed counts
+against time (history.csv)."""
 import numpy as np
 
 from . import style
@@ -29,6 +30,52 @@ def plot_tract(summary, path):
     twin.set_ylabel("equivalent diameter [mm]")
     twin.set_ylim(bottom=0)
     axis.set_title("Wound tract cross-section")
+    axis.grid(alpha=0.3)
+    style.save(fig, path)
+    return True
+
+
+def plot_penetration(summary, path):
+    """The projectile's velocity against its nose's depth (summary.json's penetration.curve)
+    and the temporary cavity's largest diameter against depth, with when it peaked. Returns
+    False (and says why) when summary.json has neither."""
+    penetration = (summary or {}).get("penetration") or {}
+    curve = penetration.get("curve") or {}
+    cavity = (summary or {}).get("temporary_cavity") or {}
+    depth, speed = np.asarray(curve.get("depth_m", []), float), np.asarray(curve.get("velocity_m_s", []), float)
+    slices = np.asarray(cavity.get("depth_m", []), float)
+    if depth.size == 0 and slices.size == 0:
+        print("skipped %s: summary.json has no penetration curve or temporary cavity" % path)
+        return False
+    fig, axes = style.figure(1, 2, width=6.0, height=4.0)
+    axis = axes[0][0]
+    axis.plot(1e3 * depth, speed, "-", color=style.BULLET_COLOUR)
+    if penetration.get("stopped"):
+        axis.axvline(1e3 * penetration["stop_depth_m"], color="k", ls=":",
+                     label="stopped at %.1f mm" % (1e3 * penetration["stop_depth_m"]))
+        axis.legend(loc="upper right")
+    axis.axvline(0.0, color="0.6", lw=0.8)
+    axis.set_xlabel("nose depth below the entrance plane [mm]")
+    axis.set_ylabel("velocity along the flight [m/s]")
+    axis.set_title("Projectile velocity against depth")
+    axis.grid(alpha=0.3)
+    axis = axes[0][1]
+    if slices.size:
+        largest = np.asarray(cavity["max_diameter_m"], float)
+        when = np.asarray(cavity["max_time_s"], float)
+        axis.plot(1e3 * slices, 1e3 * largest, "o-", ms=3, color=style.FLAG_COLOURS[1],
+                  label="largest")
+        axis.plot(1e3 * slices, 1e3 * np.asarray(cavity["diameter_now_m"], float), "-",
+                  color="0.5", label="at the end")
+        axis.set_ylabel("cavity diameter [mm]")
+        axis.set_ylim(bottom=0)
+        axis.legend(loc="lower right")
+        twin = axis.twinx()
+        twin.plot(1e3 * slices, 1e6 * when, "s", ms=2, color="k")
+        twin.set_ylabel("time of the largest [us]")
+        twin.set_ylim(bottom=0)
+    axis.set_xlabel("depth below the entrance plane [mm]")
+    axis.set_title("Temporary cavity")
     axis.grid(alpha=0.3)
     style.save(fig, path)
     return True

@@ -1,0 +1,148 @@
+// The temporary cavity: the target's stand-off from the path, by slice and sector, over time.
+#include "analysis/temporary_cavity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vulnus::analysis
+{
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+}
+
+TemporaryCavity::TemporaryCavity(const mpm::Solver& solver)
+{
+  const int projectile = solver.projectile();
+  const mpm::Particles& points = solver.points();
+  if (projectile < 0 || points.n_bodies() < 2)
+    return;
+  const mpm::SceneParameters& scene = solver.scene();
+  axis = solver.flight_direction();
+  across_1 = std::abs(axis[0]) < 0.9 ? mpm::Vector3::UnitX() : mpm::Vector3::UnitY();
+  across_1 = (across_1 - across_1.dot(axis) * axis).normalized();
+  across_2 = axis.cross(across_1);
+
+  double sums[4] = {0.0, 0.0, 0.0, 0.0}; // mass, first moment
+  for (std::size_t p = points.begin_of(projectile); p < points.end_of(projectile); ++p)
+  {
+    sums[0] += points.mass[p];
+    for (int d = 0; d < 3; ++d)
+      sums[1 + d] += points.mass[p] * points.position[p][d];
+  }
+  solver.rank_group().sum(sums, 4);
+  if (!(sums[0] > 0.0))
+    return;
+  const mpm::Vector3 centre = mpm::Vector3(sums[1], sums[2], sums[3]) / sums[0];
+  const auto [entrance, exit] = solver.target_extent_along_flight();
+  origin = centre + (entrance - centre.dot(axis)) * axis;
+
+  thickness = scene.cell_size;
+  unsigned int ppc = 1;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    if (static_cast<int>(b) != projectile)
+      ppc = std::max(ppc, scene.bodies[b].particles_per_cell);
+  half_spacing = 0.5 * scene.cell_size / ppc;
+  radius_cap = (scene.domain_max - scene.domain_min).norm();
+  const auto n_slices = static_cast<std::size_t>(std::ceil((exit - entrance) / thickness + 1e-9));
+  slices.resize(std::max<std::size_t>(n_slices, 1));
+  for (std::size_t k = 0; k < slices.size(); ++k)
+    slices[k].depth = (k + 0.5) * thickness;
+  nearest.assign(slices.size() * sectors, radius_cap);
+}
+
+void TemporaryCavity::sample(const mpm::Solver& solver)
+{
+  if (!active())
+    return;
+  const mpm::Particles& points = solver.points();
+  // Negated distances, so that one element-wise max over the ranks gives the nearest.
+  std::fill(nearest.begin(), nearest.end(), -radius_cap);
+  for (std::size_t b = 0; b < points.n_bodies(); ++b)
+  {
+    if (static_cast<int>(b) == solver.projectile())
+      continue;
+    for (std::size_t p = points.begin_of(b); p < points.end_of(b); ++p)
+    {
+      if (points.failure[p] == materials::total_failure)
+        continue;
+      const mpm::Vector3 offset = points.position[p] - origin;
+      const double along = offset.dot(axis);
+      if (along < 0.0)
+        continue;
+      const auto k = static_cast<std::size_t>(along / thickness);
+      if (k >= slices.size())
+        continue;
+      const double u = offset.dot(across_1), v = offset.dot(across_2);
+      const double r = std::sqrt(u * u + v * v);
+      double angle = std::atan2(v, u);
+      if (angle < 0.0)
+        angle += 2.0 * pi;
+      const auto s = std::min(sectors - 1, static_cast<std::size_t>(angle / (2.0 * pi) * sectors));
+      double& slot = nearest[k * sectors + s];
+      slot = std::max(slot, -r);
+    }
+  }
+  solver.rank_group().max(nearest.data(), static_cast<int>(nearest.size()));
+  const double time = solver.time();
+  const bool first = floor_diameter < 0.0;
+  for (std::size_t k = 0; k < slices.size(); ++k)
+  {
+    double area = 0.0;
+    for (std::size_t s = 0; s < sectors; ++s)
+    {
+      const double wall = std::max(0.0, -nearest[k * sectors + s] - half_spacing);
+      area += pi * wall * wall / sectors;
+    }
+    Slice& slice = slices[k];
+    slice.diameter = std::sqrt(4.0 * area / pi);
+    if (first)
+      floor_diameter = std::max(floor_diameter, slice.diameter);
+    if (slice.diameter > slice.max_diameter)
+    {
+      slice.max_diameter = slice.diameter;
+      slice.max_time = time;
+    }
+  }
+}
+
+const TemporaryCavity::Slice& TemporaryCavity::largest() const
+{
+  static const Slice none;
+  if (slices.empty())
+    return none;
+  return *std::max_element(slices.begin(), slices.end(), [](const Slice& a, const Slice& b)
+                           { return a.max_diameter < b.max_diameter; });
+}
+
+std::vector<double> TemporaryCavity::packed() const
+{
+  std::vector<double> values = {origin[0],   origin[1],   origin[2],   axis[0],     axis[1],
+                                axis[2],     across_1[0], across_1[1], across_1[2], across_2[0],
+                                across_2[1], across_2[2], thickness,   half_spacing, radius_cap,
+                                floor_diameter};
+  for (const Slice& s : slices)
+    values.insert(values.end(), {s.depth, s.diameter, s.max_diameter, s.max_time});
+  return values;
+}
+
+void TemporaryCavity::unpack(const std::vector<double>& values)
+{
+  constexpr std::size_t head = 16;
+  if (values.size() < head || (values.size() - head) % 4 != 0)
+    throw std::runtime_error("checkpoint: the temporary cavity's record is malformed");
+  origin = {values[0], values[1], values[2]};
+  axis = {values[3], values[4], values[5]};
+  across_1 = {values[6], values[7], values[8]};
+  across_2 = {values[9], values[10], values[11]};
+  thickness = values[12];
+  half_spacing = values[13];
+  radius_cap = values[14];
+  floor_diameter = values[15];
+  slices.clear();
+  for (std::size_t i = head; i < values.size(); i += 4)
+    slices.push_back({values[i], values[i + 1], values[i + 2], values[i + 3]});
+  nearest.assign(slices.size() * sectors, radius_cap);
+}
+} // namespace vulnus::analysis

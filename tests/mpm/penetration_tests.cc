@@ -1,0 +1,142 @@
+// Penetration runs: the projectile's depth record and the stop condition (a run that ends when
+// the projectile stops or turns back), and the temporary cavity around its path.
+#include "analysis/temporary_cavity.h"
+#include "mpm/projectile_penetration.h"
+#include "scene_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace vulnus
+{
+namespace
+{
+using mpm::Vector3;
+
+TEST(ProjectilePenetration, KeepsTheDeepestPointTheStopAndACurveEveryResolution)
+{
+  mpm::ProjectilePenetration record(1e-3);
+  record.record(0.0, -2e-3, 100.0, 1.0); // still outside: a slow speed would not count
+  record.record(1e-6, -1e-3, 0.5, 1.0);
+  EXPECT_FALSE(record.stopped());
+  record.record(2e-6, 0.4e-3, 80.0, 1.0);
+  record.record(3e-6, 1.2e-3, 60.0, 1.0);
+  record.record(4e-6, 2.5e-3, 30.0, 1.0);
+  record.record(5e-6, 2.9e-3, 0.8, 1.0); // stopped: at most 1 m/s inside the target
+  record.record(6e-6, 2.8e-3, -0.5, 1.0);
+  ASSERT_TRUE(record.stopped());
+  EXPECT_EQ(record.stop().time, 5e-6);
+  EXPECT_EQ(record.stop().depth, 2.9e-3);
+  EXPECT_EQ(record.max_depth(), 2.9e-3);
+  EXPECT_EQ(record.max_depth_time(), 5e-6);
+  EXPECT_EQ(record.latest().depth, 2.8e-3);
+  // The curve: the first sample, each one at least 1 mm deeper than the last kept, the stop.
+  std::vector<double> depths;
+  for (const mpm::PenetrationSample& s : record.curve())
+    depths.push_back(s.depth);
+  EXPECT_EQ(depths, (std::vector<double>{-2e-3, -1e-3, 0.4e-3, 2.5e-3, 2.9e-3}));
+
+  mpm::ProjectilePenetration copy;
+  copy.unpack(record.packed());
+  EXPECT_EQ(copy.packed(), record.packed());
+  EXPECT_THROW(copy.unpack({1.0, 2.0}), std::runtime_error);
+}
+
+/// The slow light ball of the ricochet test (long_run_tests.cc) on stiff rubber: it goes in,
+/// stops and turns back without passing through.
+mpm::SceneParameters bouncing_ball()
+{
+  mpm::SceneParameters scene = test::rigid_ball_into_gel_slab();
+  for (const int f : {0, 1, 4, 5})
+    scene.domain_faces[f] = mpm::FaceCondition::fixed;
+  scene.materials[0] = test::elastic_material("gel", 2e6, 2e5);
+  scene.bodies[1].density = 1000.0;
+  scene.bodies[1].initial_velocity = Vector3(0, 2, 0);
+  scene.end_time = 20e-3;
+  scene.stop_when_projectile_stops = true;
+  scene.projectile_stop_speed = 0.0;
+  return scene;
+}
+
+TEST(Penetration, ARunEndsWhereTheProjectileTurnsBackAtItsDeepest)
+{
+  const mpm::SceneParameters scene = bouncing_ball();
+  mpm::Solver solver(scene);
+  const double entrance = solver.target_extent_along_flight().first;
+  double previous_speed = 2.0;
+  std::size_t steps = 0;
+  while (!solver.finished())
+  {
+    solver.advance();
+    ++steps;
+    const mpm::ProjectilePenetration& p = solver.penetration();
+    // The record is the particles' own: the foremost ball point, plus half its spacing,
+    // below the slab's first points; the mass-centre speed along +y.
+    const mpm::Particles& points = solver.points();
+    double nose = -1.0, momentum = 0.0, mass = 0.0;
+    for (std::size_t i = points.begin_of(1); i < points.end_of(1); ++i)
+    {
+      nose = std::max(nose, points.position[i][1]);
+      momentum += points.mass[i] * points.velocity[i][1];
+      mass += points.mass[i];
+    }
+    EXPECT_NEAR(p.latest().depth, nose + 0.25e-3 - entrance, 1e-15);
+    EXPECT_NEAR(p.latest().speed, momentum / mass, 1e-12);
+    if (!solver.finished())
+      previous_speed = p.latest().speed;
+  }
+  const mpm::ProjectilePenetration& p = solver.penetration();
+  ASSERT_TRUE(p.stopped());
+  // It stopped at the first step whose speed was not positive, inside the slab, before it
+  // could leave it again (the ricochet test's exit comes later), and never went through.
+  EXPECT_LE(p.stop().speed, 0.0);
+  EXPECT_GT(previous_speed, 0.0);
+  EXPECT_GT(p.stop().depth, 0.0);
+  EXPECT_FALSE(solver.projectile_exit().recorded);
+  EXPECT_EQ(p.stop().time, solver.time());
+  // Turning back at the stop: the deepest point is the stop's, to within one step's travel.
+  EXPECT_LE(p.max_depth() - p.stop().depth,
+            std::max(previous_speed, -p.stop().speed) * solver.last_time_step() + 1e-15);
+  std::cout << "stopped after " << steps << " steps at t = " << p.stop().time << " s, depth "
+            << p.stop().depth * 1e3 << " mm\n";
+}
+
+TEST(TemporaryCavity, ClosedBeforeTheBallAndAtLeastTheBallWhileItPasses)
+{
+  // The rigid 5 mm ball through the 4 mm gel slab at 50 m/s. Before it arrives the slices
+  // measure only the lattice: 16 sectors around an axis between four points 0.5 mm apart
+  // find their nearest point 0.35 to 0.8 mm out, an equivalent diameter of about 2.7
+  // spacings, and that is the floor the summary reports; while it passes, no
+  // stress-carrying gel point can lie inside it (grid contact lets the bodies overlap by at
+  // most about a cell), so every slice opens to at least 2 (R - h) = 3 mm; and no cavity is
+  // wider than the 16 mm slab.
+  mpm::SceneParameters scene = test::rigid_ball_into_gel_slab();
+  scene.stop_when_projectile_exits = false;
+  mpm::Solver solver(scene);
+  analysis::TemporaryCavity cavity(solver);
+  ASSERT_TRUE(cavity.active());
+  cavity.sample(solver);
+  ASSERT_EQ(cavity.profile().size(), 4u); // the slab's points span 3.5 mm: four 1 mm slices
+  for (const auto& slice : cavity.profile())
+    EXPECT_LT(slice.max_diameter, 3 * 0.5e-3);
+  EXPECT_EQ(cavity.resolution_floor(), cavity.largest().max_diameter);
+  while (!solver.finished())
+  {
+    solver.advance();
+    cavity.sample(solver);
+  }
+  for (const auto& slice : cavity.profile())
+  {
+    std::cout << "slice at " << slice.depth * 1e3 << " mm: largest " << slice.max_diameter * 1e3
+              << " mm at " << slice.max_time * 1e6 << " us, now " << slice.diameter * 1e3 << " mm\n";
+    EXPECT_GT(slice.max_diameter, 3e-3);
+    EXPECT_LT(slice.max_diameter, 16e-3);
+    EXPECT_GT(slice.max_time, 0.0);
+  }
+  analysis::TemporaryCavity copy;
+  copy.unpack(cavity.packed());
+  EXPECT_EQ(copy.packed(), cavity.packed());
+}
+} // namespace
+} // namespace vulnus
