@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +21,7 @@
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -208,6 +210,66 @@ void align_tract_slices(const nlohmann::json& a, nlohmann::json& b, std::ostream
   out << "note: the runs slice the tract differently (A: " << slicing(*depth_a)
       << ", B: " << slicing(*depth_b)
       << "); B's tract.area_m2 below is its profile averaged over A's slices\n\n";
+}
+
+/// Linear interpolation of the curve (x increasing where it is sampled) at x; nothing outside.
+std::optional<double> interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
+                                  const double x)
+{
+  for (std::size_t i = 1; i < xs.size(); ++i)
+    if ((xs[i - 1] <= x && x <= xs[i]) && xs[i] > xs[i - 1])
+      return ys[i - 1] + (ys[i] - ys[i - 1]) * (x - xs[i - 1]) / (xs[i] - xs[i - 1]);
+  return std::nullopt;
+}
+
+/// The velocity-depth curves are sampled at each run's own depths and the cavity profiles are
+/// one cell per slice, so neither compares index by index: each run's curve is replaced by its
+/// velocity at the same five depths (0, 1/4, ... 1 of the shallower run's deepest point), and
+/// the per-slice cavity lists are left out (their largest value stays; plot-wound draws them).
+void compact_penetration(nlohmann::json& a, nlohmann::json& b, std::ostream& out)
+{
+  const auto curve = [](const nlohmann::json& summary, const char* key)
+  {
+    std::vector<double> values;
+    if (summary.contains("penetration") && summary["penetration"].contains("curve"))
+      for (const auto& v : summary["penetration"]["curve"][key])
+        values.push_back(v.is_number() ? v.get<double>() : std::nan(""));
+    return values;
+  };
+  const std::vector<double> depth_a = curve(a, "depth_m"), depth_b = curve(b, "depth_m");
+  bool left_out = false;
+  if (!depth_a.empty() && !depth_b.empty())
+  {
+    const std::vector<double> speed_a = curve(a, "velocity_m_s"), speed_b = curve(b, "velocity_m_s");
+    const double deepest = std::min(*std::max_element(depth_a.begin(), depth_a.end()),
+                                    *std::max_element(depth_b.begin(), depth_b.end()));
+    for (const double fraction : {0.0, 0.25, 0.5, 0.75, 1.0})
+    {
+      char key[48];
+      std::snprintf(key, sizeof(key), "velocity_m_s_at_depth_fraction_%.2f", fraction);
+      for (auto [summary, depths, speeds] : {std::tie(a, depth_a, speed_a), std::tie(b, depth_b, speed_b)})
+      {
+        const std::optional<double> v = interpolate(depths, speeds, fraction * deepest);
+        summary["penetration"][key] = v ? nlohmann::json(*v) : nlohmann::json();
+      }
+    }
+    left_out = true;
+  }
+  for (nlohmann::json* summary : {&a, &b})
+  {
+    if (summary->contains("penetration"))
+      (*summary)["penetration"].erase("curve");
+    if (summary->contains("temporary_cavity"))
+      for (const char* key : {"depth_m", "max_diameter_m", "max_time_s", "diameter_now_m"})
+        (*summary)["temporary_cavity"].erase(key);
+  }
+  if (left_out)
+    out << "note: penetration.curve is compared as the velocity at 0, 25, 50, 75 and 100 % of "
+           "the shallower run's deepest point ("
+        << format_number(1e3 * std::min(*std::max_element(depth_a.begin(), depth_a.end()),
+                                        *std::max_element(depth_b.begin(), depth_b.end())),
+                         4)
+        << " mm); the temporary cavity's per-slice lists are left out (plot-wound draws them)\n\n";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -460,7 +522,7 @@ int compare_runs(const std::string& run_a, const std::string& run_b, std::ostrea
   {
     check_directory(run_a);
     check_directory(run_b);
-    const nlohmann::json summary_a = read_summary(run_a);
+    nlohmann::json summary_a = read_summary(run_a);
     nlohmann::json summary_b = read_summary(run_b);
     const std::optional<fs::path> file_a = last_particle_file(run_a),
                                   file_b = last_particle_file(run_b);
@@ -474,6 +536,7 @@ int compare_runs(const std::string& run_a, const std::string& run_b, std::ostrea
 
     out << "A: " << run_a << "\nB: " << run_b << "\n\n";
     align_tract_slices(summary_a, summary_b, out);
+    compact_penetration(summary_a, summary_b, out);
     compare_summaries(summary_a, summary_b, out);
     if (points_a && points_b)
       compare_failure(*points_a, *points_b, out);

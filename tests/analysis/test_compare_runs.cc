@@ -206,6 +206,34 @@ TEST(CompareRuns, TractsSlicedAtOtherCellSizesCompareDepthForDepth)
   EXPECT_FALSE(contains(result.out, "note:")) << result.out;
 }
 
+TEST(CompareRuns, PenetrationCurvesCompareAtTheSameDepths)
+{
+  // Two velocity-depth curves sampled at different depths, both v = 100 - 1e4 d (m/s, m):
+  // at the same fractions of the shallower deepest point (2 mm) they agree exactly; the
+  // per-slice cavity lists are not compared index by index.
+  const Scratch scratch;
+  const auto a = scratch.make("a"), b = scratch.make("b");
+  write_summary(a, {{"penetration", {{"depth_m", 2e-3}, {"curve", {{"depth_m", {0.0, 1e-3, 2e-3}},
+                                                                  {"velocity_m_s", {100.0, 90.0, 80.0}},
+                                                                  {"time_s", {0.0, 1e-5, 2e-5}}}}}},
+                    {"temporary_cavity", {{"depth_m", {5e-4}}, {"max_diameter_m", {3e-3}}}}});
+  write_summary(b, {{"penetration", {{"depth_m", 3e-3}, {"curve", {{"depth_m", {0.0, 0.8e-3, 3e-3}},
+                                                                  {"velocity_m_s", {100.0, 92.0, 70.0}},
+                                                                  {"time_s", {0.0, 1e-5, 3e-5}}}}}},
+                    {"temporary_cavity", {{"depth_m", {5e-4, 1.5e-3}}, {"max_diameter_m", {3e-3, 4e-3}}}}});
+  const Result result = compare(a, b);
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "shallower run's deepest point (2 mm)")) << result.out;
+  for (const char* key : {"penetration.velocity_m_s_at_depth_fraction_0.00",
+                          "penetration.velocity_m_s_at_depth_fraction_0.25",
+                          "penetration.velocity_m_s_at_depth_fraction_0.75",
+                          "penetration.velocity_m_s_at_depth_fraction_1.00"})
+    EXPECT_EQ(row(result.out, key).at(4), "0") << key << "\n" << result.out;
+  EXPECT_EQ(row(result.out, "penetration.velocity_m_s_at_depth_fraction_0.50").at(1), "90");
+  EXPECT_FALSE(contains(result.out, "curve.depth_m")) << result.out;
+  EXPECT_FALSE(contains(result.out, "temporary_cavity.max_diameter_m")) << result.out;
+}
+
 TEST(CompareRuns, WithoutParticleFilesComparesSummariesOnly)
 {
   const Scratch scratch;
