@@ -237,12 +237,13 @@ void compact_penetration(nlohmann::json& a, nlohmann::json& b, std::ostream& out
     return values;
   };
   const std::vector<double> depth_a = curve(a, "depth_m"), depth_b = curve(b, "depth_m");
-  bool left_out = false;
-  if (!depth_a.empty() && !depth_b.empty())
+  const bool both_curves = !depth_a.empty() && !depth_b.empty();
+  const double deepest = both_curves ? std::min(*std::max_element(depth_a.begin(), depth_a.end()),
+                                                *std::max_element(depth_b.begin(), depth_b.end()))
+                                     : 0.0;
+  if (both_curves)
   {
     const std::vector<double> speed_a = curve(a, "velocity_m_s"), speed_b = curve(b, "velocity_m_s");
-    const double deepest = std::min(*std::max_element(depth_a.begin(), depth_a.end()),
-                                    *std::max_element(depth_b.begin(), depth_b.end()));
     for (const double fraction : {0.0, 0.25, 0.5, 0.75, 1.0})
     {
       char key[48];
@@ -253,7 +254,6 @@ void compact_penetration(nlohmann::json& a, nlohmann::json& b, std::ostream& out
         summary["penetration"][key] = v ? nlohmann::json(*v) : nlohmann::json();
       }
     }
-    left_out = true;
   }
   for (nlohmann::json* summary : {&a, &b})
   {
@@ -263,12 +263,10 @@ void compact_penetration(nlohmann::json& a, nlohmann::json& b, std::ostream& out
       for (const char* key : {"depth_m", "max_diameter_m", "max_time_s", "diameter_now_m"})
         (*summary)["temporary_cavity"].erase(key);
   }
-  if (left_out)
+  if (both_curves)
     out << "note: penetration.curve is compared as the velocity at 0, 25, 50, 75 and 100 % of "
            "the shallower run's deepest point ("
-        << format_number(1e3 * std::min(*std::max_element(depth_a.begin(), depth_a.end()),
-                                        *std::max_element(depth_b.begin(), depth_b.end())),
-                         4)
+        << format_number(1e3 * deepest, 4)
         << " mm); the temporary cavity's per-slice lists are left out (plot-wound draws them)\n\n";
 }
 
