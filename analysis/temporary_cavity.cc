@@ -36,20 +36,44 @@ TemporaryCavity::TemporaryCavity(const mpm::Solver& solver)
     return;
   const mpm::Vector3 centre = mpm::Vector3(sums[1], sums[2], sums[3]) / sums[0];
   const auto [entrance, exit] = solver.target_extent_along_flight();
-  origin = centre + (entrance - centre.dot(axis)) * axis;
-
   thickness = scene.cell_size;
   unsigned int ppc = 1;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
     if (static_cast<int>(b) != projectile)
       ppc = std::max(ppc, scene.bodies[b].particles_per_cell);
   half_spacing = 0.5 * scene.cell_size / ppc;
+  // Slices start at the entrance face, half a spacing before the first layer of points, so
+  // that every layer lies inside a slice and none on a slice boundary (where round-off would
+  // move whole layers between slices and leave a slice empty).
+  origin = centre + (entrance - half_spacing - centre.dot(axis)) * axis;
   radius_cap = (scene.domain_max - scene.domain_min).norm();
-  const auto n_slices = static_cast<std::size_t>(std::ceil((exit - entrance) / thickness + 1e-9));
+  const auto n_slices =
+      static_cast<std::size_t>(std::ceil((exit - entrance + 2.0 * half_spacing) / thickness - 1e-9));
   slices.resize(std::max<std::size_t>(n_slices, 1));
   for (std::size_t k = 0; k < slices.size(); ++k)
     slices[k].depth = (k + 0.5) * thickness;
   nearest.assign(slices.size() * sectors, radius_cap);
+}
+
+std::array<double, TemporaryCavity::sectors>
+TemporaryCavity::distances_to_the_grid_edge(const mpm::SceneParameters& scene) const
+{
+  std::array<double, sectors> distances;
+  for (std::size_t s = 0; s < sectors; ++s)
+  {
+    const double angle = (s + 0.5) * 2.0 * pi / sectors;
+    const mpm::Vector3 direction = std::cos(angle) * across_1 + std::sin(angle) * across_2;
+    double distance = radius_cap;
+    for (int d = 0; d < 3; ++d)
+    {
+      if (std::abs(direction[d]) < 1e-12)
+        continue;
+      const double face = direction[d] > 0.0 ? scene.domain_max[d] : scene.domain_min[d];
+      distance = std::min(distance, std::max(0.0, (face - origin[d]) / direction[d]));
+    }
+    distances[s] = distance;
+  }
+  return distances;
 }
 
 void TemporaryCavity::sample(const mpm::Solver& solver)
@@ -87,12 +111,14 @@ void TemporaryCavity::sample(const mpm::Solver& solver)
   solver.rank_group().max(nearest.data(), static_cast<int>(nearest.size()));
   const double time = solver.time();
   const bool first = floor_diameter < 0.0;
+  const std::array<double, sectors> edge = distances_to_the_grid_edge(solver.scene());
   for (std::size_t k = 0; k < slices.size(); ++k)
   {
     double area = 0.0;
     for (std::size_t s = 0; s < sectors; ++s)
     {
-      const double wall = std::max(0.0, -nearest[k * sectors + s] - half_spacing);
+      const double wall =
+          std::min(edge[s], std::max(0.0, -nearest[k * sectors + s] - half_spacing));
       area += pi * wall * wall / sectors;
     }
     Slice& slice = slices[k];

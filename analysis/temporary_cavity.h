@@ -4,6 +4,7 @@
 
 #include "mpm/solver.h"
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -14,8 +15,10 @@ namespace vulnus::analysis
 /// in each of `sectors` equal angular sectors around the path, the wall is the nearest point
 /// of the target that still carries stress (totally failed debris is not wall) to the path,
 /// less half a point spacing (a point's own extent). The cavity's area is the sum of the
-/// sectors' discs, pi r_i^2 / sectors; its diameter the equivalent one, sqrt(4 A / pi). An
-/// empty sector counts at `radius_cap`. For every slice the largest diameter over the samples
+/// sectors' discs, pi r_i^2 / sectors; its diameter the equivalent one, sqrt(4 A / pi). No
+/// wall is farther than the grid's boundary along the sector's middle direction, so a sector
+/// emptied to the edge (gelatin splashed out of the entrance) counts as open to the edge, not
+/// beyond it. For every slice the largest diameter over the samples
 /// and its time are kept, beside the latest. Near the path a sector is narrower than the
 /// point spacing, so undisturbed material already measures about 2.7 point spacings: the
 /// first sample's largest diameter is kept as the measure's floor (resolution_floor()).
@@ -26,7 +29,7 @@ public:
 
   struct Slice
   {
-    double depth = 0.0;        ///< m, the slice's middle below the entrance plane
+    double depth = 0.0;        ///< m, the slice's middle below the entrance face
     double diameter = 0.0;     ///< m, latest sample
     double max_diameter = 0.0; ///< m, largest sample
     double max_time = 0.0;     ///< s, when it was largest
@@ -51,12 +54,15 @@ public:
   void unpack(const std::vector<double>& values);
 
 private:
-  mpm::Vector3 origin = mpm::Vector3::Zero(); ///< the path at the entrance plane
+  mpm::Vector3 origin = mpm::Vector3::Zero(); ///< the path at the entrance face
   mpm::Vector3 axis = mpm::Vector3::UnitY();
   mpm::Vector3 across_1 = mpm::Vector3::UnitX(), across_2 = mpm::Vector3::UnitZ();
   double thickness = 0.0;
   double half_spacing = 0.0;
   double radius_cap = 0.0;
+
+  /// From the path to the grid's boundary along each sector's middle direction.
+  std::array<double, sectors> distances_to_the_grid_edge(const mpm::SceneParameters& scene) const;
   double floor_diameter = -1.0; ///< set by the first sample
   std::vector<Slice> slices;
   std::vector<double> nearest; ///< per slice and sector, this sample's wall distance

@@ -43,6 +43,46 @@ std::string selection_of(const std::vector<std::string>& names)
 
 const char* shear_measure_names[3] = {"E1-E3", "(E1-E3)/2", "ln(l1/l3)"};
 
+const char* volumetric_law_name(const materials::VolumetricLawKind kind)
+{
+  switch (kind)
+  {
+    case materials::VolumetricLawKind::hugoniot:
+      return "Hugoniot";
+    case materials::VolumetricLawKind::logarithmic:
+      return "logarithmic";
+    case materials::VolumetricLawKind::simo_hughes:
+      break;
+  }
+  return "Simo-Hughes";
+}
+
+materials::VolumetricLawKind volumetric_law_of(const std::string& name)
+{
+  return name == "Hugoniot"      ? materials::VolumetricLawKind::hugoniot
+         : name == "logarithmic" ? materials::VolumetricLawKind::logarithmic
+                                 : materials::VolumetricLawKind::simo_hughes;
+}
+
+/// Volumetric law and Hugoniot slope; the tissue law offers no Simo-Hughes law.
+void declare_volumetric_law(EntryTable& table, const materials::VolumetricLawKind kind,
+                            const double slope, const bool with_simo_hughes)
+{
+  table.declare("Volumetric law", volumetric_law_name(kind),
+                Patterns::Selection(with_simo_hughes ? "Simo-Hughes|logarithmic|Hugoniot"
+                                                     : "logarithmic|Hugoniot"),
+                std::string("Volumetric energy U(J): ") +
+                    (with_simo_hughes ? "Simo-Hughes, U = K/2 [(J^2-1)/2 - ln J] (the "
+                                        "bullet's); logarithmic, U = K/2 (ln J)^2; "
+                                      : "logarithmic, U = K/2 (ln J)^2 (the paper's); ") +
+                    "Hugoniot, compression on the linear shock Hugoniot Us = c0 + s up of "
+                    "water-like tissue and gelatin (c0^2 = K / rho0, s = Hugoniot slope; "
+                    "tension logarithmic; docs/volumetric_law.md).");
+  table.declare("Hugoniot slope", format_number(slope), Patterns::Double(0.0),
+                "Slope s of the shock Hugoniot Us = c0 + s up [-], Volumetric law = Hugoniot "
+                "only; 0.5 to 4 (10 % gelatin: 2, Zochowski 2019).");
+}
+
 void declare_tissue(EntryTable& table, const materials::TissueParameters& d, const bool with_fibers)
 {
   table.declare("c1", format_number(d.c1), Patterns::Double(0.0),
@@ -63,17 +103,7 @@ void declare_tissue(EntryTable& table, const materials::TissueParameters& d, con
   table.declare("Bulk modulus", format_number(d.bulk_modulus), Patterns::Double(0.0),
                 "Bulk modulus K [Pa] of the volumetric energy (the paper: 200 kPa; water and "
                 "soft tissue: about 2.2 GPa, inputs/water).");
-  table.declare("Volumetric law",
-                d.volumetric_law == materials::VolumetricLawKind::hugoniot ? "Hugoniot"
-                                                                           : "logarithmic",
-                Patterns::Selection("logarithmic|Hugoniot"),
-                "Volumetric energy U(J): logarithmic, U = K/2 (ln J)^2 (the paper's); Hugoniot, "
-                "compression on the linear shock Hugoniot Us = c0 + s up of water-like tissue "
-                "(c0^2 = K / rho0, s = Hugoniot slope; tension logarithmic; "
-                "docs/volumetric_law.md).");
-  table.declare("Hugoniot slope", format_number(d.hugoniot_slope), Patterns::Double(0.0),
-                "Slope s of the shock Hugoniot Us = c0 + s up [-], Volumetric law = Hugoniot "
-                "only; 0.5 to 4 (10 % gelatin: 2, Zochowski 2019).");
+  declare_volumetric_law(table, d.volumetric_law, d.hugoniot_slope, false);
   table.enter("Failure");
   table.declare("Enabled", d.failure.enabled ? "true" : "false", Patterns::Bool(),
                 "Two-surface failure of matrix and fibers (paper eqs. 5-6).");
@@ -114,8 +144,7 @@ void parse_tissue(ParameterHandler& prm, materials::TissueParameters& t, const b
   else
     t.c3 = t.c5 = 0.0;
   t.bulk_modulus = prm.get_double("Bulk modulus");
-  t.volumetric_law = prm.get("Volumetric law") == "Hugoniot" ? materials::VolumetricLawKind::hugoniot
-                                                             : materials::VolumetricLawKind::logarithmic;
+  t.volumetric_law = volumetric_law_of(prm.get("Volumetric law"));
   t.hugoniot_slope = prm.get_double("Hugoniot slope");
   prm.enter_subsection("Failure");
   t.failure.enabled = prm.get_bool("Enabled");
@@ -140,6 +169,18 @@ void declare_elastic_plastic(EntryTable& table, const materials::ElasticPlasticP
                 "Initial yield stress sigma_y [Pa]; > 0 (the paper's bullet: 422.6 MPa).");
   table.declare("Hardening modulus", format_number(d.hardening_modulus), Patterns::Double(0.0),
                 "Linear isotropic hardening modulus H [Pa]; >= 0 (the paper's bullet: 53.8 MPa).");
+  declare_volumetric_law(table, d.volumetric_law, d.hugoniot_slope, true);
+  table.declare("Rate constant", format_number(d.rate_constant), Patterns::Double(0.0),
+                "Cowper-Symonds D [1/s] of the flow stress (sigma_y + H alpha)(1 + (alpha_dot / "
+                "D)^(1/q)), alpha_dot the equivalent plastic strain rate; 0: rate-independent "
+                "(the default).");
+  table.declare("Rate exponent", format_number(d.rate_exponent), Patterns::Double(0.0),
+                "Cowper-Symonds exponent q [-]; 0.1 to 100 (1: a linear, viscous overstress).");
+  table.declare("Failure plastic strain", format_number(d.failure_plastic_strain),
+                Patterns::Double(0.0),
+                "Equivalent plastic strain at which a point fails totally and becomes debris "
+                "(pressure in compression only, counted as failed); 0: never (the default; 10 % "
+                "gelatin: 0.9, Zochowski 2019).");
 }
 
 void parse_elastic_plastic(ParameterHandler& prm, materials::ElasticPlasticParameters& e)
@@ -148,6 +189,11 @@ void parse_elastic_plastic(ParameterHandler& prm, materials::ElasticPlasticParam
   e.shear_modulus = prm.get_double("Shear modulus");
   e.yield_stress = prm.get_double("Yield stress");
   e.hardening_modulus = prm.get_double("Hardening modulus");
+  e.volumetric_law = volumetric_law_of(prm.get("Volumetric law"));
+  e.hugoniot_slope = prm.get_double("Hugoniot slope");
+  e.rate_constant = prm.get_double("Rate constant");
+  e.rate_exponent = prm.get_double("Rate exponent");
+  e.failure_plastic_strain = prm.get_double("Failure plastic strain");
 }
 
 std::string default_model(const std::string& material, const std::vector<std::string>& models)

@@ -11,7 +11,7 @@ void CellStiffness::evaluate(const dealii::FEValues<3>& fe_values,
                              const std::vector<unsigned int>& component,
                              const std::vector<double>& u_local, const materials::Material& law,
                              const Eigen::Vector3d* fibers, materials::PointState* states,
-                             const bool volume_averaging)
+                             const bool volume_averaging, const double time_step)
 {
   const unsigned int n_q = fe_values.n_quadrature_points;
   const unsigned int n_dofs = static_cast<unsigned int>(u_local.size());
@@ -42,8 +42,8 @@ void CellStiffness::evaluate(const dealii::FEValues<3>& fe_values,
   std::vector<Eigen::Matrix3d> sigma(n_q), P_law(n_q);
   for (unsigned int q = 0; q < n_q; ++q)
   {
-    law.update(F_law[q], fibers[q], states[q], responses[q]);
-    tangents[q] = law.tangent(F_law[q], fibers[q], states[q]);
+    law.update(F_law[q], fibers[q], states[q], responses[q], time_step);
+    tangents[q] = law.tangent(F_law[q], fibers[q], states[q], time_step);
     sigma[q] = responses[q].cauchy_stress;
     P_law[q] = F_law[q].determinant() * sigma[q] * F_law[q].inverse().transpose();
   }

@@ -30,7 +30,7 @@ struct CellStiffness
   void evaluate(const dealii::FEValues<3>& fe_values, const std::vector<unsigned int>& component,
                 const std::vector<double>& u_local, const materials::Material& law,
                 const Eigen::Vector3d* fibers, materials::PointState* states,
-                bool volume_averaging);
+                bool volume_averaging, double time_step);
 
   /// f_int of dof i of the cell.
   double force(unsigned int i, unsigned int component_of_i) const;

@@ -34,6 +34,7 @@ void FarFieldSolver::evaluate_explicit_forces(const double t)
 void FarFieldSolver::advance_explicit(const double dt)
 {
   Data& d = *data;
+  d.material_time_step = dt;
   if (d.prm.staggered_velocity)
   {
     advance_explicit_staggered(dt);
@@ -81,6 +82,7 @@ void FarFieldSolver::advance_explicit(const double dt)
 void FarFieldSolver::advance_explicit_staggered(const double dt)
 {
   Data& d = *data;
+  d.material_time_step = dt;
   const double t_mid = d.time + 0.5 * dt;
   const std::size_t n_dirichlet = d.dirichlet_dofs.size();
   std::vector<double> v_old(n_dirichlet), v_step(n_dirichlet);

@@ -191,6 +191,10 @@ struct FarFieldSolver::Data
 
   bool is_implicit() const { return prm.integrator != TimeIntegrator::central_difference; }
 
+  /// The step over which the trial states are reached from the committed ones (s), for
+  /// rate-dependent laws; set by the integrators before they evaluate (0 before the first).
+  double material_time_step = 0.0;
+
   /// Velocity of a Dirichlet dof at time t.
   double dirichlet_velocity(const DirichletDof& d, double t) const;
 

@@ -135,7 +135,7 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
     try
     {
       law.evaluate(fe_values, component, u_local, *d.material, &d.fiber_directions[first], states,
-                   d.prm.volume_averaging);
+                   d.prm.volume_averaging, d.material_time_step);
     }
     catch (const std::runtime_error& e)
     {
@@ -324,6 +324,7 @@ void finish_step(FarFieldSolver::Data& d, ImplicitData& im, const AlphaCoefficie
 void FarFieldSolver::advance_implicit(const double dt)
 {
   Data& d = *data;
+  d.material_time_step = dt;
   if (!d.implicit)
     initialize_implicit(d);
   ImplicitData& im = *d.implicit;

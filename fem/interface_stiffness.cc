@@ -91,7 +91,7 @@ void FarFieldSolver::prepare_interface_stiffness(const double dt)
     std::vector<materials::PointState> states(&d.committed_states[first],
                                               &d.committed_states[first] + d.n_q_points);
     law.evaluate(fe_values, component, u_local, *d.material, &d.fiber_directions[first],
-                 states.data(), d.prm.volume_averaging);
+                 states.data(), d.prm.volume_averaging, dt);
     for (unsigned int q = 0; q < d.n_q_points; ++q)
     {
       const double rho_JxW = d.prm.density * fe_values.JxW(q);

@@ -130,7 +130,8 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       state = committed_states[first + q];
       try
       {
-        material->update(F_law, fiber_directions[first + q], state, w.response);
+        material->update(F_law, fiber_directions[first + q], state, w.response,
+                         material_time_step);
       }
       catch (const std::runtime_error& e)
       {

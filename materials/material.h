@@ -95,6 +95,9 @@ struct PointBlock
   PlasticHistory* plastic = nullptr;
   const PlasticSlot* plastic_slots = nullptr;
   PointResponse* responses = nullptr;
+  /// The step over which the deformation gradients were reached (s); 0 when unknown, and
+  /// rate-dependent laws then use their rate-free strength.
+  double time_step = 0.0;
 };
 
 class Material
@@ -115,17 +118,30 @@ public:
   virtual const FailureParameters* failure_criterion() const { return nullptr; }
 
   /// Update one point: F the total deformation gradient, a0 the unit reference fiber
-  /// direction (ignored without fibers). Updates the history in state.
+  /// direction (ignored without fibers), reached over time_step from the stored state (0:
+  /// unknown, rate-free). Updates the history in state.
   virtual void update(const Tensor2& F, const Vector3& a0, PointState& state,
-                      PointResponse& response) const = 0;
+                      PointResponse& response, double time_step) const = 0;
+  /// The rate-free update (time_step 0), for drivers and checks without a time scale.
+  void update(const Tensor2& F, const Vector3& a0, PointState& state,
+              PointResponse& response) const
+  {
+    update(F, a0, state, response, 0.0);
+  }
 
   /// Update a block of points: one virtual call per block, the loop inside is not virtual.
   /// Threading is the caller's (split the block).
   virtual void update_block(const PointBlock& block) const = 0;
 
   /// Consistent tangent dP/dF at (F, state) without changing the state (failure frozen,
-  /// plastic flow as in the return map of an update from the stored state).
-  virtual Tangent tangent(const Tensor2& F, const Vector3& a0, const PointState& state) const = 0;
+  /// plastic flow as in the return map of an update from the stored state over time_step).
+  virtual Tangent tangent(const Tensor2& F, const Vector3& a0, const PointState& state,
+                          double time_step) const = 0;
+  /// The rate-free tangent (time_step 0).
+  Tangent tangent(const Tensor2& F, const Vector3& a0, const PointState& state) const
+  {
+    return tangent(F, a0, state, 0.0);
+  }
 };
 
 /// Implements update_block for a concrete law through its non-virtual update_point,
@@ -133,10 +149,14 @@ public:
 template <class Law> class MaterialBase : public Material
 {
 public:
-  void update(const Tensor2& F, const Vector3& a0, PointState& state,
-              PointResponse& response) const final
+  using Material::tangent;
+  using Material::update;
+
+  void update(const Tensor2& F, const Vector3& a0, PointState& state, PointResponse& response,
+              const double time_step) const final
   {
-    static_cast<const Law&>(*this).update_point(F, a0, state.failure, state.plastic, response);
+    static_cast<const Law&>(*this).update_point(F, a0, state.failure, state.plastic, response,
+                                                time_step);
   }
 
   void update_block(const PointBlock& block) const final
@@ -154,7 +174,7 @@ public:
                          : no_fiber,
                        block.failure[i],
                        block.plastic ? block.plastic[block.plastic_slots[i].index] : unused,
-                       block.responses[i]);
+                       block.responses[i], block.time_step);
   }
 };
 } // namespace vulnus::materials

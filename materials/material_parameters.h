@@ -15,11 +15,12 @@ enum class ShearMeasure
   log_stretch_ratio                ///< ln(l1 / l3) of the principal stretches
 };
 
-/// The tissue's volumetric energy (materials/volumetric_law.h).
+/// A law's volumetric energy (materials/volumetric_law.h).
 enum class VolumetricLawKind
 {
-  logarithmic, ///< U = K/2 (ln J)^2 (the paper's)
-  hugoniot     ///< compression on the linear shock Hugoniot Us = c0 + s up, K = rho0 c0^2
+  logarithmic, ///< U = K/2 (ln J)^2 (the paper's tissue)
+  hugoniot,    ///< compression on the linear shock Hugoniot Us = c0 + s up, K = rho0 c0^2
+  simo_hughes  ///< U = K/2 [(J^2 - 1)/2 - ln J] (the elastic-plastic bullet's)
 };
 
 /// Two-surface failure (paper eqs. 5-6).
@@ -58,6 +59,15 @@ struct ElasticPlasticParameters
   double shear_modulus = 53.8e9;     ///< Pa
   double yield_stress = 422.6e6;     ///< Pa
   double hardening_modulus = 53.8e6; ///< Pa, linear isotropic hardening
+  VolumetricLawKind volumetric_law = VolumetricLawKind::simo_hughes;
+  double hugoniot_slope = 2.0; ///< s of Us = c0 + s up (Hugoniot law only)
+  /// Cowper-Symonds rate dependence of the flow stress, (sigma_y + H alpha) (1 + (alpha_dot /
+  /// D)^(1/q)) with alpha_dot the equivalent plastic strain rate; D = 0: rate-independent.
+  double rate_constant = 0.0; ///< D, 1/s
+  double rate_exponent = 1.0; ///< q, -
+  /// Equivalent plastic strain at which a point fails totally and becomes debris (pressure in
+  /// compression only); 0: never fails.
+  double failure_plastic_strain = 0.0;
 };
 
 /// Which registered model, and the parameters of each model (only the chosen one is used).

@@ -14,13 +14,15 @@ public:
   std::string model_name() const override { return "rigid"; }
   bool is_rigid() const override { return true; }
 
+  using Material::tangent;
+
   void update_point(const Tensor2&, const Vector3&, std::uint8_t&, PlasticHistory&,
-                    PointResponse& response) const
+                    PointResponse& response, double) const
   {
     response = PointResponse();
   }
 
-  Tangent tangent(const Tensor2&, const Vector3&, const PointState&) const override
+  Tangent tangent(const Tensor2&, const Vector3&, const PointState&, double) const override
   {
     return Tangent::Zero();
   }

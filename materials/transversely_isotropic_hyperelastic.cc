@@ -203,7 +203,7 @@ double TissueHyperelastic<with_fibers>::p_wave_modulus(const Tensor2& F, const V
 template <bool with_fibers>
 void TissueHyperelastic<with_fibers>::update_point(const Tensor2& F, const Vector3& a0,
                                                    std::uint8_t& failure, PlasticHistory&,
-                                                   PointResponse& response) const
+                                                   PointResponse& response, double) const
 {
   const double J = F.determinant();
   if (!(J > 0.0) || !std::isfinite(J))
@@ -238,7 +238,7 @@ void TissueHyperelastic<with_fibers>::update_point(const Tensor2& F, const Vecto
 
 template <bool with_fibers>
 Tangent TissueHyperelastic<with_fibers>::tangent(const Tensor2& F, const Vector3& a0,
-                                                 const PointState& state) const
+                                                 const PointState& state, double) const
 {
   Tangent D;
   const Matrix3<Dual> F_dual = F.cast<Dual>();

@@ -73,12 +73,16 @@ public:
     return prm.failure.enabled ? &prm.failure : nullptr;
   }
 
+  using Material::tangent;
+
+  /// The law is rate-free: the time step is not used.
   void update_point(const Tensor2& F, const Vector3& a0, std::uint8_t& failure,
-                    PlasticHistory& unused, PointResponse& response) const;
+                    PlasticHistory& unused, PointResponse& response, double time_step) const;
 
   /// Exact dP/dF (forward-mode dual numbers through the stress) with the failure flags
   /// of state frozen.
-  Tangent tangent(const Tensor2& F, const Vector3& a0, const PointState& state) const override;
+  Tangent tangent(const Tensor2& F, const Vector3& a0, const PointState& state,
+                  double time_step) const override;
 
   /// Parts of the stress and energy at F with the given failure flags (no failure check).
   TissueStressParts stress_parts(const Tensor2& F, const Vector3& a0,

@@ -1,5 +1,6 @@
-// The tissue's volumetric energy U(J): the paper's logarithmic law, or a law whose compression
-// follows the linear shock Hugoniot of water-like tissue (docs/volumetric_law.md).
+// A law's volumetric energy U(J): the paper's logarithmic law, a law whose compression follows
+// the linear shock Hugoniot of water-like tissue and gelatin (docs/volumetric_law.md), or the
+// elastic-plastic bullet's Simo-Hughes law.
 #pragma once
 
 #include "materials/dual_number.h"
@@ -9,9 +10,11 @@
 
 namespace vulnus::materials
 {
-/// U(J) of the tissue law, with sigma_vol = U'(J) I (Cauchy) and the pressure p = -U'(J).
+/// U(J) of a law, with sigma_vol = U'(J) I (Cauchy) and the pressure p = -U'(J).
 ///
 /// logarithmic: U = K/2 (ln J)^2, p = -K ln J / J.
+///
+/// Simo-Hughes: U = K/2 [(J^2 - 1)/2 - ln J], J U' = K/2 (J^2 - 1), J U'' = K/2 (J + 1/J).
 ///
 /// Hugoniot (J < 1): the pressure of the linear shock Hugoniot Us = c0 + s up with
 /// K = rho0 c0^2, written in eta = 1 - J (= up / Us on the Hugoniot):
@@ -29,10 +32,16 @@ class VolumetricLaw
 public:
   static constexpr double hugoniot_w_floor = 0.25;
 
+  VolumetricLaw(const double bulk_modulus, const VolumetricLawKind kind,
+                const double hugoniot_slope)
+      : K(bulk_modulus), s(hugoniot_slope), hugoniot(kind == VolumetricLawKind::hugoniot),
+        simo_hughes(kind == VolumetricLawKind::simo_hughes),
+        J_floor(1.0 - (1.0 - hugoniot_w_floor) / hugoniot_slope)
+  {
+  }
+
   explicit VolumetricLaw(const TissueParameters& p)
-      : K(p.bulk_modulus), s(p.hugoniot_slope),
-        hugoniot(p.volumetric_law == VolumetricLawKind::hugoniot),
-        J_floor(1.0 - (1.0 - hugoniot_w_floor) / p.hugoniot_slope)
+      : VolumetricLaw(p.bulk_modulus, p.volumetric_law, p.hugoniot_slope)
   {
   }
 
@@ -40,6 +49,8 @@ public:
   template <typename Scalar> Scalar kirchhoff_pressure_term(const Scalar& J) const
   {
     using std::log;
+    if (simo_hughes)
+      return 0.5 * K * (J * J - 1.0);
     if (!hugoniot || !(value_of(J) < 1.0))
       return K * log(J);
     return J * derivative(J);
@@ -48,6 +59,8 @@ public:
   /// U(J) per unit reference volume.
   double energy(const double J) const
   {
+    if (simo_hughes)
+      return 0.5 * K * (0.5 * (J * J - 1.0) - std::log(J));
     if (!hugoniot || !(J < 1.0))
       return 0.5 * K * std::log(J) * std::log(J);
     if (J < J_floor)
@@ -62,6 +75,8 @@ public:
   /// K_t = J U''(J), the tangent bulk modulus (may be negative in tension, J > e).
   double tangent_bulk_modulus(const double J) const
   {
+    if (simo_hughes)
+      return 0.5 * K * (J + 1.0 / J);
     if (!hugoniot || !(J < 1.0))
       return K * (1.0 - std::log(J)) / J;
     return J * second_derivative(J < J_floor ? J_floor : J);
@@ -96,6 +111,7 @@ private:
   double K;
   double s;
   bool hugoniot;
+  bool simo_hughes;
   double J_floor; ///< J where w = hugoniot_w_floor
 };
 } // namespace vulnus::materials

@@ -29,6 +29,7 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
     block.plastic_slots = &particles.plastic_slot[begin];
   }
   block.responses = responses.data();
+  block.time_step = s.time_step;
   material.update_block(block);
   for (long p = begin; p < end; ++p)
   {

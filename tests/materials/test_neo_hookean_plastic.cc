@@ -112,9 +112,11 @@ TEST(NeoHookeanPlastic, ElasticUnloadingAndDissipation)
   }
   const double alpha = state.plastic.equivalent_plastic_strain;
   ASSERT_GT(alpha, 1e-3);
-  // Plastic work = int (sigma_y + H a) da (backward Euler: exact up to H dalpha^2 / 2).
+  // Plastic work = int (sigma_y + H a) da. The law books the stored energy its return
+  // removes, which includes the elastic trial's overshoot of each step (E dl / (2 sigma_y),
+  // 0.4 % here) and differs from sigma_y dalpha by a term of the elastic strain (0.3 %).
   const double expected = p.yield_stress * alpha + 0.5 * p.hardening_modulus * alpha * alpha;
-  EXPECT_NEAR(dissipated, expected, 1e-3 * expected);
+  EXPECT_NEAR(dissipated, expected, 5e-3 * expected);
 
   // Unloading: plastic strain frozen, stress drops with Young's modulus.
   const double E =
@@ -212,7 +214,7 @@ TEST(NeoHookeanPlastic, TangentMatchesFiniteDifferences)
     {
       const Tangent D = bullet.tangent(G, Vector3::UnitX(), state);
       auto P = [&](const Tensor2& H) {
-        return testing::first_piola(bullet.return_map(H, state.plastic).kirchhoff_stress / H.determinant(),
+        return testing::first_piola(bullet.return_map(H, state.plastic, 0.0).kirchhoff_stress / H.determinant(),
                                     H);
       };
       const Tangent D_fd = testing::finite_difference_tangent(P, G, 1e-7);

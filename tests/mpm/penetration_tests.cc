@@ -1,5 +1,6 @@
 // Penetration runs: the projectile's depth record and the stop condition (a run that ends when
 // the projectile stops or turns back), and the temporary cavity around its path.
+#include "analysis/mpm_summary.h"
 #include "analysis/temporary_cavity.h"
 #include "mpm/projectile_penetration.h"
 #include "scene_fixtures.h"
@@ -100,6 +101,69 @@ TEST(Penetration, ARunEndsWhereTheProjectileTurnsBackAtItsDeepest)
             std::max(previous_speed, -p.stop().speed) * solver.last_time_step() + 1e-15);
   std::cout << "stopped after " << steps << " steps at t = " << p.stop().time << " s, depth "
             << p.stop().depth * 1e3 << " mm\n";
+}
+
+/// A soft gelatin-like block (the elastic-plastic law with the Hugoniot, failure at plastic
+/// strain 0.9, Zochowski's shear modulus and yield; K lowered to 5 MPa so that the test takes
+/// few steps) that a rigid steel ball enters at 12 m/s and stops in.
+mpm::SceneParameters ball_into_gelatin()
+{
+  mpm::SceneParameters scene = test::rigid_ball_into_gel_slab();
+  for (const int f : {0, 1, 4, 5})
+    scene.domain_faces[f] = mpm::FaceCondition::fixed;
+  scene.domain_max[1] = 16e-3;
+  scene.bodies[0].box_max[1] = 12e-3;
+  scene.remove_points_leaving_grid = true; // splash off the entrance face, booked as outflow
+  mpm::NamedMaterial& gelatin = scene.materials[0];
+  gelatin.parameters.model = "elastic plastic";
+  materials::ElasticPlasticParameters& e = gelatin.parameters.elastic_plastic;
+  e.bulk_modulus = 5e6;
+  e.shear_modulus = 0.85e6;
+  e.yield_stress = 0.22e6;
+  e.hardening_modulus = 0.0;
+  e.volumetric_law = materials::VolumetricLawKind::hugoniot;
+  e.failure_plastic_strain = 0.9;
+  scene.bodies[0].density = 1030.0;
+  scene.bodies[1].initial_velocity = Vector3(0, 12, 0);
+  scene.end_time = 20e-3;
+  scene.stop_when_projectile_stops = true;
+  return scene;
+}
+
+TEST(Penetration, ABallStopsInGelatinWithItsMomentumAccountedFor)
+{
+  mpm::Solver solver(ball_into_gelatin());
+  const Vector3 initial_momentum = solver.initial_momentum();
+  double largest_error = 0.0;
+  std::size_t steps = 0;
+  while (!solver.finished())
+  {
+    solver.advance();
+    ++steps;
+    const mpm::SceneDiagnostics d = solver.diagnostics();
+    // Momentum: what the bodies hold, what the supports gave and what left the grid add up
+    // to the start's (round-off of the sums over the points and the steps).
+    Vector3 supplied = Vector3::Zero();
+    for (const Vector3& impulse : solver.support_impulses())
+      supplied += impulse;
+    const Vector3 balance = d.momentum - supplied + solver.removed_momentum() - initial_momentum;
+    ASSERT_LT(balance.norm(), 1e-9 * initial_momentum.norm()) << "step " << steps;
+    largest_error = std::max(largest_error,
+                             std::abs(analysis::relative_balance_error(
+                                 analysis::accounted_energy(solver, d), solver.initial_energy())));
+  }
+  const mpm::ProjectilePenetration& p = solver.penetration();
+  ASSERT_TRUE(p.stopped());
+  EXPECT_GT(p.stop().depth, 2.5e-3); // the ball went in
+  EXPECT_LT(p.stop().depth, 12e-3);  // and stopped inside
+  EXPECT_FALSE(solver.projectile_exit().recorded);
+  // Energy is not asserted: in this slow contact the grid's contact correction books more
+  // dissipation than the scene loses (strain plus kinetic energy alone keep 90 % of the start's
+  // with an elastic gel, while contact books 65 %: a balance of +30 to +60 %, rigid or
+  // deformable ball, FLIP or PIC), a defect of the contact's bookkeeping noted on issue 45,
+  // not of the gelatin law, whose own balance RateDependentPlasticity checks.
+  std::cout << "stopped after " << steps << " steps at depth " << p.stop().depth * 1e3
+            << " mm; largest energy balance error " << largest_error << "\n";
 }
 
 TEST(TemporaryCavity, ClosedBeforeTheBallAndAtLeastTheBallWhileItPasses)
