@@ -69,9 +69,14 @@ def plot_penetration(summary, path):
                   color="0.5", label="at the end")
         axis.set_ylabel("cavity diameter [mm]")
         axis.set_ylim(bottom=0)
-        axis.legend(loc="lower right")
+        floor = float(cavity.get("resolution_floor_m", 0.0))
+        axis.axhline(1e3 * floor, color="0.6", lw=0.8, ls=":", label="resolution floor")
+        axis.legend(loc="lower left", framealpha=0.9)
+        # A time only where the cavity opened well beyond what undisturbed material measures:
+        # near the floor the largest diameter is the material's jitter and its time meaningless.
+        opened = largest > 1.5 * floor
         twin = axis.twinx()
-        twin.plot(1e3 * slices, 1e6 * when, "s", ms=2, color="k")
+        twin.plot(1e3 * slices[opened], 1e6 * when[opened], "s", ms=2, color="k")
         twin.set_ylabel("time of the largest [us]")
         twin.set_ylim(bottom=0)
     axis.set_xlabel("depth below the entrance plane [mm]")
