@@ -34,12 +34,12 @@ void FarFieldSolver::evaluate_explicit_forces(const double t)
 void FarFieldSolver::advance_explicit(const double dt)
 {
   Data& d = *data;
-  d.material_time_step = dt;
   if (d.prm.staggered_velocity)
   {
     advance_explicit_staggered(dt);
     return;
   }
+  d.material_time_step = dt;
   const double t_new = d.time + dt;
   const std::size_t n_dirichlet = d.dirichlet_dofs.size();
   std::vector<double> u_old(n_dirichlet), v_old(n_dirichlet), v_new(n_dirichlet);

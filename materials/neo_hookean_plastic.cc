@@ -135,7 +135,7 @@ PlasticReturn<Scalar> NeoHookeanPlastic::return_map(const Matrix3<Scalar>& F,
     result.plastic_multiplier = Scalar(0.0);
     result.deviatoric_norm = norm_trial;
     result.flow_stress = Scalar(prm.yield_stress + H * alpha_n);
-    result.trial_trace = b_trial.trace();
+    result.trial_trace = 3.0 * I_e;
     return result;
   }
 
@@ -181,7 +181,7 @@ PlasticReturn<Scalar> NeoHookeanPlastic::return_map(const Matrix3<Scalar>& F,
   result.equivalent_plastic_strain = alpha_n + sqrt_two_thirds * delta_gamma;
   result.deviatoric_norm = norm_trial - 2.0 * mu_bar * delta_gamma;
   result.flow_stress = flow_stress;
-  result.trial_trace = b_trial.trace();
+  result.trial_trace = 3.0 * I_e;
   return result;
 }
 
@@ -198,13 +198,18 @@ void NeoHookeanPlastic::update_point(const Tensor2& F, const Vector3&, std::uint
   const double J = F.determinant();
   if (!(J > 0.0) || !std::isfinite(J))
     throw_inverted(J);
-  if (failure & total_failure)
+  // Debris: the volumetric stress, energy and wave in compression, nothing in tension.
+  auto set_debris_response = [&]()
   {
     response.cauchy_stress = debris_kirchhoff_stress(J) / J;
     response.energy_density = J < 1.0 ? volumetric.energy(J) : 0.0;
-    response.dissipated_density = 0.0;
     response.von_mises_over_yield = 0.0;
     response.p_wave_modulus = J < 1.0 ? std::max(volumetric.tangent_bulk_modulus(J), 0.0) : 0.0;
+  };
+  if (failure & total_failure)
+  {
+    set_debris_response();
+    response.dissipated_density = 0.0;
     return;
   }
   const PlasticReturn<double> r = return_map(F, history, time_step);
@@ -230,13 +235,9 @@ void NeoHookeanPlastic::update_point(const Tensor2& F, const Vector3&, std::uint
       !(r.equivalent_plastic_strain < prm.failure_plastic_strain))
   {
     failure = total_failure;
-    const double debris_energy = J < 1.0 ? volumetric.energy(J) : 0.0;
-    response.dissipated_density += response.energy_density - debris_energy;
-    response.cauchy_stress = debris_kirchhoff_stress(J) / J;
-    response.energy_density = debris_energy;
-    response.von_mises_over_yield = 0.0;
-    response.p_wave_modulus =
-        J < 1.0 ? std::max(volumetric.tangent_bulk_modulus(J), 0.0) : 0.0;
+    const double intact_energy = response.energy_density;
+    set_debris_response();
+    response.dissipated_density += intact_energy - response.energy_density;
   }
 }
 

@@ -32,10 +32,9 @@ class VolumetricLaw
 public:
   static constexpr double hugoniot_w_floor = 0.25;
 
-  VolumetricLaw(const double bulk_modulus, const VolumetricLawKind kind,
+  VolumetricLaw(const double bulk_modulus, const VolumetricLawKind law_kind,
                 const double hugoniot_slope)
-      : K(bulk_modulus), s(hugoniot_slope), hugoniot(kind == VolumetricLawKind::hugoniot),
-        simo_hughes(kind == VolumetricLawKind::simo_hughes),
+      : K(bulk_modulus), s(hugoniot_slope), kind(law_kind),
         J_floor(1.0 - (1.0 - hugoniot_w_floor) / hugoniot_slope)
   {
   }
@@ -49,9 +48,9 @@ public:
   template <typename Scalar> Scalar kirchhoff_pressure_term(const Scalar& J) const
   {
     using std::log;
-    if (simo_hughes)
+    if (kind == VolumetricLawKind::simo_hughes)
       return 0.5 * K * (J * J - 1.0);
-    if (!hugoniot || !(value_of(J) < 1.0))
+    if (kind == VolumetricLawKind::logarithmic || !(value_of(J) < 1.0))
       return K * log(J);
     return J * derivative(J);
   }
@@ -59,9 +58,9 @@ public:
   /// U(J) per unit reference volume.
   double energy(const double J) const
   {
-    if (simo_hughes)
+    if (kind == VolumetricLawKind::simo_hughes)
       return 0.5 * K * (0.5 * (J * J - 1.0) - std::log(J));
-    if (!hugoniot || !(J < 1.0))
+    if (kind == VolumetricLawKind::logarithmic || !(J < 1.0))
       return 0.5 * K * std::log(J) * std::log(J);
     if (J < J_floor)
     {
@@ -75,9 +74,9 @@ public:
   /// K_t = J U''(J), the tangent bulk modulus (may be negative in tension, J > e).
   double tangent_bulk_modulus(const double J) const
   {
-    if (simo_hughes)
+    if (kind == VolumetricLawKind::simo_hughes)
       return 0.5 * K * (J + 1.0 / J);
-    if (!hugoniot || !(J < 1.0))
+    if (kind == VolumetricLawKind::logarithmic || !(J < 1.0))
       return K * (1.0 - std::log(J)) / J;
     return J * second_derivative(J < J_floor ? J_floor : J);
   }
@@ -110,8 +109,7 @@ private:
 
   double K;
   double s;
-  bool hugoniot;
-  bool simo_hughes;
+  VolumetricLawKind kind;
   double J_floor; ///< J where w = hugoniot_w_floor
 };
 } // namespace vulnus::materials
