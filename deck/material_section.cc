@@ -126,6 +126,17 @@ void declare_tissue(EntryTable& table, const materials::TissueParameters& d, con
                 "before comparing them with the limits, so the failed zone is at least about "
                 "l wide whatever the cell size; 0: the paper's local criterion. FE points keep "
                 "the local one. One MPI rank only (docs/mesh_objective_failure.md).");
+  table.declare("Stress after failure",
+                d.failure.stress_after_failure == materials::StressAfterFailure::zero ? "zero"
+                                                                                       : "debris",
+                Patterns::Selection("debris|zero"),
+                "What a failed point carries. debris: a failed matrix keeps the volumetric "
+                "pressure in compression and its fibers carry f a (x) a on the total stretch; "
+                "total failure keeps the pressure in compression, so failed tissue is never "
+                "crushed. zero: the paper's and Uintah's rule, a failed matrix annuls the "
+                "matrix and volumetric stress (the fibers carry on as before), total failure "
+                "annuls all; a failed point whose step would invert it becomes debris of its "
+                "own volume (docs/uintah_side_by_side.md).");
   table.leave();
 }
 
@@ -156,6 +167,9 @@ void parse_tissue(ParameterHandler& prm, materials::TissueParameters& t, const b
   if (with_fibers)
     t.failure.fiber_stretch_limit = prm.get_double("Fiber stretch limit");
   t.failure.regularization_length = prm.get_double("Regularization length");
+  t.failure.stress_after_failure = prm.get("Stress after failure") == "zero"
+                                     ? materials::StressAfterFailure::zero
+                                     : materials::StressAfterFailure::debris;
   prm.leave_subsection();
 }
 

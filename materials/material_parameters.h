@@ -23,6 +23,13 @@ enum class VolumetricLawKind
   simo_hughes  ///< U = K/2 [(J^2 - 1)/2 - ln J] (the elastic-plastic bullet's)
 };
 
+/// What a failed tissue point carries (docs/DESIGN.md section 3, docs/uintah_side_by_side.md).
+enum class StressAfterFailure
+{
+  debris, ///< failed matrix: fibers f a (x) a on the total stretch, pressure in compression only
+  zero    ///< the paper's and Uintah's rule: failed matrix annuls matrix and pressure, total all
+};
+
 /// Two-surface failure (paper eqs. 5-6).
 struct FailureParameters
 {
@@ -33,6 +40,7 @@ struct FailureParameters
   /// Nonlocal regularization: radius l (m) over which the MPM points average both failure
   /// measures before comparing them with the limits; 0: the paper's local criterion.
   double regularization_length = 0.0;
+  StressAfterFailure stress_after_failure = StressAfterFailure::debris;
 };
 
 /// Transversely isotropic hyperelastic tissue (Weiss 1996, uncoupled). With

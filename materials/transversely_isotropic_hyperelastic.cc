@@ -46,7 +46,8 @@ template <bool with_fibers>
 TissueHyperelastic<with_fibers>::TissueHyperelastic(const TissueParameters& parameters)
     : prm(parameters), fibers(with_fibers ? parameters.c3 : 0.0, parameters.c4,
                               with_fibers ? parameters.c5 : 0.0, parameters.lambda_star),
-      volumetric(parameters), small_strain_shear_modulus(2.0 * (parameters.c1 + parameters.c2))
+      volumetric(parameters), small_strain_shear_modulus(2.0 * (parameters.c1 + parameters.c2)),
+      failed_carries_nothing(parameters.failure.stress_after_failure == StressAfterFailure::zero)
 {
   prm.with_fibers = with_fibers;
 }
@@ -102,7 +103,7 @@ void TissueHyperelastic<with_fibers>::kirchhoff_parts(const Matrix3<Scalar>& F, 
     if (energies)
       energies->volumetric_energy = volumetric.energy(value_of(J));
   }
-  else if (value_of(J) < 1.0)
+  else if (!failed_carries_nothing && value_of(J) < 1.0)
   {
     // Failed tissue is debris: it keeps the pressure of the volumetric law in compression
     // (U(J) for J < 1, 0 beyond: C1 at J = 1), so it is never crushed.
@@ -114,11 +115,13 @@ void TissueHyperelastic<with_fibers>::kirchhoff_parts(const Matrix3<Scalar>& F, 
   if constexpr (with_fibers)
   {
     // Intact matrix: the uncoupled form on the deviatoric stretch, whose -f/3 I the matrix's
-    // pressure balances. Failed matrix: nothing balances it, so the fibers carry their
-    // uniaxial stress f a (x) a on the total stretch |F a0| (W = F2(lambda), tau = f a (x) a).
+    // pressure balances. Failed matrix (debris rule): nothing balances it, so the fibers carry
+    // their uniaxial stress f a (x) a on the total stretch |F a0| (W = F2(lambda), tau = f a
+    // (x) a). The zero rule keeps the intact form, as Uintah's TransIsoHyper does.
+    const bool uncoupled = matrix_intact || failed_carries_nothing;
     const Eigen::Matrix<Scalar, 3, 1> Fa =
-        matrix_intact ? Eigen::Matrix<Scalar, 3, 1>(J_minus_third * (F * a0.cast<Scalar>()))
-                      : Eigen::Matrix<Scalar, 3, 1>(F * a0.cast<Scalar>());
+        uncoupled ? Eigen::Matrix<Scalar, 3, 1>(J_minus_third * (F * a0.cast<Scalar>()))
+                  : Eigen::Matrix<Scalar, 3, 1>(F * a0.cast<Scalar>());
     const Scalar I4 = Fa.dot(Fa);
     const Scalar lambda = sqrt(I4);
     if (energies)
@@ -127,7 +130,7 @@ void TissueHyperelastic<with_fibers>::kirchhoff_parts(const Matrix3<Scalar>& F, 
     {
       const Scalar f = fibers.force(lambda);
       tau_fibers = (f / I4) * (Fa * Fa.transpose());
-      if (matrix_intact)
+      if (uncoupled)
         tau_fibers -= (f / 3.0) * identity;
       if (energies)
         energies->fiber_energy = fibers.energy(value_of(lambda));
@@ -172,7 +175,7 @@ double TissueHyperelastic<with_fibers>::wave_modulus(const double J, const doubl
 {
   double modulus = 0.0;
   const bool matrix_intact = !(flags & matrix_failed);
-  if (matrix_intact || J < 1.0)
+  if (matrix_intact || (J < 1.0 && !failed_carries_nothing))
     modulus += std::max(volumetric.tangent_bulk_modulus(J), 0.0);
   if (matrix_intact)
     modulus += 4.0 / 3.0 * 2.0 * (prm.c1 + prm.c2 * I1) * I1 / (3.0 * J);
@@ -195,7 +198,8 @@ double TissueHyperelastic<with_fibers>::p_wave_modulus(const Tensor2& F, const V
     throw_inverted(J);
   const double J_minus_third = 1.0 / std::cbrt(J);
   const double I1 = J_minus_third * J_minus_third * F.squaredNorm();
-  const double fiber_scale = (flags & matrix_failed) ? 1.0 : J_minus_third;
+  const double fiber_scale =
+      (flags & matrix_failed) && !failed_carries_nothing ? 1.0 : J_minus_third;
   const double lambda = with_fibers ? fiber_scale * (F * a0).norm() : 1.0;
   return wave_modulus(J, I1, lambda, flags);
 }
@@ -327,7 +331,9 @@ const std::string common_documentation =
     "measure E1-E3, (E1-E3)/2 or ln(l1/l3)) zeroes matrix stress and tension pressure (failed "
     "tissue keeps its pressure in compression; the fibers of a failed matrix carry f a (x) a on "
     "the total stretch), Fiber stretch limit (default 1.4, total stretch |F a0|) zeroes fiber "
-    "stress; flags 0 intact, 1 matrix, 2 fibers, 3 total.";
+    "stress; flags 0 intact, 1 matrix, 2 fibers, 3 total. Stress after failure = zero "
+    "applies the paper's rule instead: a failed matrix carries no matrix stress and no "
+    "pressure, total failure nothing.";
 
 const bool transversely_isotropic_registered = register_material_model(
     "transversely isotropic hyperelastic",

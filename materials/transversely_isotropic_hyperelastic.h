@@ -113,6 +113,7 @@ private:
   WeissFiberLaw fibers;
   VolumetricLaw volumetric;
   double small_strain_shear_modulus; ///< mu0 = 2 (c1 + c2)
+  bool failed_carries_nothing; ///< Failure/Stress after failure = zero (the paper's rule)
 };
 
 using TransverselyIsotropicHyperelastic = TissueHyperelastic<true>;

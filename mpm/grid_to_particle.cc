@@ -188,14 +188,25 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                      const double J = F.determinant() * std::exp(dt * L.trace());
                      F = std::cbrt(J) * Tensor2::Identity();
                    }
-                   else if (midpoint)
-                   {
-                     const Tensor2 half_step = (0.5 * dt) * L;
-                     F = (Tensor2::Identity() - half_step).inverse() *
-                         ((Tensor2::Identity() + half_step) * F);
-                   }
                    else
-                     F = (Tensor2::Identity() + dt * L) * F;
+                   {
+                     const double J_failed = particles.failure[p] ? F.determinant() : 0.0;
+                     if (midpoint)
+                     {
+                       const Tensor2 half_step = (0.5 * dt) * L;
+                       F = (Tensor2::Identity() - half_step).inverse() *
+                           ((Tensor2::Identity() + half_step) * F);
+                     }
+                     else
+                       F = (Tensor2::Identity() + dt * L) * F;
+                     if (particles.failure[p] && !(F.determinant() > 0.0))
+                     {
+                       // A failed point that this step would invert (no pressure resists
+                       // it under Stress after failure = zero) is crushed to debris.
+                       F = std::cbrt(J_failed * std::exp(dt * L.trace())) * Tensor2::Identity();
+                       particles.failure[p] = materials::total_failure;
+                     }
+                   }
                    if (averaging)
                    {
                      // Rate and limits once the cell has its mean volume change; L's trace

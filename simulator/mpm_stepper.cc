@@ -94,11 +94,14 @@ void MpmStepper::log_scene(io::RunDirectory& directory) const
       line << ", rigid: no stress update, no time-step limit";
     else if (m.model_name().find("hyperelastic") != std::string::npos)
     {
-      const bool failure_on =
-        mpm::find_material(scene, body.material)->parameters.tissue.failure.enabled;
+      const materials::FailureParameters& failure =
+        mpm::find_material(scene, body.material)->parameters.tissue.failure;
+      const bool zero_rule =
+        failure.stress_after_failure == materials::StressAfterFailure::zero;
       line << (m.uses_fibers() ? "" : ", no fiber work")
-           << (failure_on ? ", failed tissue keeps its pressure in compression"
-                          : ", failure off: no eigenvalues");
+           << (!failure.enabled ? ", failure off: no eigenvalues"
+               : zero_rule      ? ", failed tissue carries no pressure (the paper's rule)"
+                                : ", failed tissue keeps its pressure in compression");
     }
     if (solver.subcycles_projectile() && static_cast<int>(b) == solver.projectile())
       line << ", subcycled: substeps of its own CFL step inside the scene's step, leading "

@@ -158,6 +158,65 @@ TEST(TissueFailure, FailedTissueKeepsItsPressureInCompressionOnly)
   }
 }
 
+TissueParameters paper_rule()
+{
+  TissueParameters p{};
+  p.failure.stress_after_failure = StressAfterFailure::zero;
+  return p;
+}
+
+TEST(TissueFailure, PaperRuleFailedMatrixCarriesOnlyItsIntactFibers)
+{
+  // Uintah's TransIsoHyper: a failed matrix drops the matrix and the pressure, in compression
+  // too, and the fibers keep their intact (uncoupled) stress; total failure carries nothing.
+  const TransverselyIsotropicHyperelastic tissue(paper_rule());
+  const Vector3 a0 = Vector3::UnitX();
+  for (const double volume : {0.8, 1.05})
+  {
+    const Tensor2 F = std::cbrt(volume) * isochoric_uniaxial(1.2, a0);
+    PointState state;
+    state.failure = matrix_failed;
+    PointResponse response;
+    tissue.update(F, a0, state, response);
+    const TissueStressParts intact_parts = tissue.stress_parts(F, a0, intact);
+    ASSERT_GT(max_abs(intact_parts.fibers), 1e3);
+    EXPECT_LT(max_abs(response.cauchy_stress - intact_parts.fibers),
+              1e-12 * max_abs(intact_parts.fibers))
+        << "J = " << volume;
+    EXPECT_NEAR(response.energy_density, intact_parts.fiber_energy,
+                1e-12 * intact_parts.fiber_energy);
+    // The fibers' wave alone, on the deviatoric stretch 1.2: no pressure's wave.
+    const TissueParameters p = paper_rule();
+    const WeissFiberLaw law(p.c3, p.c4, p.c5, p.lambda_star);
+    EXPECT_NEAR(response.p_wave_modulus, (law.stiffness(1.2) + law.force(1.2)) / volume,
+                1e-9 * response.p_wave_modulus);
+
+    state.failure = total_failure;
+    tissue.update(F, a0, state, response);
+    EXPECT_EQ(max_abs(response.cauchy_stress), 0.0) << "J = " << volume;
+    EXPECT_EQ(response.energy_density, 0.0);
+    EXPECT_EQ(response.p_wave_modulus, 0.0);
+  }
+}
+
+TEST(TissueFailure, PaperRuleReleasesThePressureEnergyAtFailure)
+{
+  // Compressed and sheared past the limit: the paper's rule releases the matrix's and the
+  // pressure's stored energy and keeps the fibers' (the debris rule would keep the pressure's).
+  const Vector3 a0 = Vector3::UnitZ();
+  const Tensor2 F = 0.9 * isochoric_uniaxial(1.45, a0); // E1 - E3 = 0.57, fibers at 1.305
+  const TransverselyIsotropicHyperelastic tissue(paper_rule());
+  const TissueStressParts before = tissue.stress_parts(F, a0, intact);
+  ASSERT_GT(before.volumetric_energy, 0.1 * before.total_energy());
+  PointState state;
+  PointResponse response;
+  tissue.update(F, a0, state, response);
+  ASSERT_EQ(state.failure, matrix_failed);
+  EXPECT_NEAR(response.dissipated_density, before.volumetric_energy + before.matrix_energy,
+              1e-9 * before.total_energy());
+  EXPECT_NEAR(response.energy_density, before.fiber_energy, 1e-9 * before.total_energy());
+}
+
 TEST(TissueFailure, FlagsAreIrreversible)
 {
   const TransverselyIsotropicHyperelastic tissue(TissueParameters{});
