@@ -21,6 +21,17 @@ void declare_contact_section(EntryTable& table)
                 "check off (contact wherever both bodies reach a node and approach, up to a "
                 "cell before their surfaces meet). Touching half-spaces under linear weights "
                 "sit 2/3 of a cell apart.");
+  table.declare("Criterion", "approach", Patterns::Selection("approach|approach or compression"),
+                "Where bodies interact at a shared node: approach (only where they approach "
+                "each other), or approach or compression (also where a body's surface is in "
+                "compression, n . sigma n < 0 of its nodal stress, even while they separate: "
+                "Uintah's friction_bard; one MPI rank; docs/uintah_side_by_side.md).");
+  table.declare("Passes", "one", Patterns::Selection("one|two"),
+                "one: contact corrects the velocities after the forces act. two: it also "
+                "corrects the velocities projected from the points before the forces act, and "
+                "the points' FLIP increments leave that first correction out (Uintah's "
+                "friction_bard, OneOrTwoStep = 2). Not applied to a subcycled projectile's "
+                "steps.");
   table.leave();
 }
 
@@ -30,6 +41,8 @@ void parse_contact_section(dealii::ParameterHandler& prm, mpm::ContactParameters
   contact.enabled = prm.get_bool("Enabled");
   contact.friction_coefficient = prm.get_double("Friction coefficient");
   contact.proximity_distance = prm.get_double("Proximity distance");
+  contact.hold_compressed_surfaces = prm.get("Criterion") == "approach or compression";
+  contact.two_passes = prm.get("Passes") == "two";
   prm.leave_subsection();
 }
 } // namespace vulnus::deck

@@ -39,6 +39,9 @@ struct GridFields
   std::vector<Vector3> velocity;     ///< v^n, projected from the points
   std::vector<Vector3> velocity_new; ///< v^(n+1) after forces, contact and boundary conditions
   std::vector<Vector3> projected_momentum; ///< MUSL: the points' new momenta projected back
+  /// sum_p N_i(x_p) sigma_p per node and body (Voigt xx yy zz xy yz xz), for the contact's
+  /// compression criterion only (GridUpdateSettings::hold_compressed_surfaces).
+  std::vector<Eigen::Matrix<double, 6, 1>> stress_sum;
 
   /// Sizes the arrays; data is not cleared (the scatter clears it in parallel).
   void resize(std::size_t n_active_nodes)

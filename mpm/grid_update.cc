@@ -1,6 +1,8 @@
 // Nodal velocity update, multi-velocity-field frictional contact, boundary conditions.
 #include "mpm/grid_update.h"
 
+#include "mpm/particles.h"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -55,6 +57,9 @@ void apply_face_conditions(const Grid& grid, const FaceConditions& faces, const 
 
 namespace
 {
+/// n . S n below minus this (Pa, a stress sum) counts as compression: Uintah's 1e-12.
+constexpr double compression_floor = 1e-12;
+
 /// Separation along `normal` (the first body's outward normal) of two bodies' mass centres
 /// seen from a node, at the end of the step if nothing acted between them (`closing`: their
 /// approach speed along the normal).
@@ -68,8 +73,9 @@ double gap_after_step(const NodeBodyData& first, const NodeBodyData& second,
 
 /// Corrects the velocities of the bodies meeting at one node. `v` holds the trial
 /// velocities of the n_bodies entries; returns the kinetic energy removed.
-double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Vector3* v,
-                       const std::size_t n_bodies, Vector3* contact_force_local)
+double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data,
+                       const SymmetricTensor* stress, Vector3* v, const std::size_t n_bodies,
+                       Vector3* contact_force_local)
 {
   // Centre-of-mass velocity, or the velocity of the rigid body, else of the contact leader,
   // when one is present (both are called rigid below: the others follow them).
@@ -159,11 +165,14 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data, Ve
     else
     {
       const double approach = relative.dot(normal);
-      if (approach <= 0.0)
-        continue; // separating: bodies move independently
+      // Separating bodies move independently, unless the compression criterion holds a
+      // compressed surface (the correction then removes the separation).
+      if (approach <= 0.0 &&
+          !(stress && normal.dot(full_tensor(stress[b]) * normal) < -compression_floor))
+        continue;
       const Vector3 tangential = relative - approach * normal;
       const double slip = tangential.norm();
-      const double friction_limit = s.friction_coefficient * approach;
+      const double friction_limit = s.friction_coefficient * std::abs(approach);
       if (slip <= friction_limit)
         v[b] = v_cm; // sticking
       else
@@ -225,6 +234,7 @@ void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fiel
   std::array<Vector3, 6> impulse_local, impulse_elsewhere; // another rank's node
   impulse_local.fill(Vector3::Zero());
   impulse_elsewhere.fill(Vector3::Zero());
+  std::vector<Vector3> unbooked_force(n_bodies, Vector3::Zero());
 #pragma omp for schedule(static)
   for (long node = 0; node < n_nodes; ++node)
   {
@@ -249,6 +259,19 @@ void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fiel
         continue;
       }
       v[b] = data[b].momentum / data[b].mass;
+    }
+    if (s.contact && s.correct_projected_velocities && s.subcycled_body < 0 && n_with_mass > 1)
+    {
+      // Uintah's first pass: the projected velocities are corrected before the forces act.
+      // Nothing is booked: the points' FLIP increments v_new - v leave it out, as Uintah's do.
+      const SymmetricTensor* stress =
+        s.hold_compressed_surfaces ? &fields.stress_sum[node * n_bodies] : nullptr;
+      resolve_contact(s, data, stress, v, n_bodies, unbooked_force.data());
+    }
+    for (std::size_t b = 0; b < n_bodies; ++b)
+    {
+      if (data[b].mass <= s.mass_tolerance || s.body_is_rigid[b])
+        continue;
       // The contact leader's internal forces act in its own substeps: at the scene's step they
       // would be unstable, and contact needs its velocity only.
       const bool leader = static_cast<int>(b) == s.subcycled_body;
@@ -319,7 +342,9 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
       Vector3* v_new = &fields.velocity_new[node * n_bodies];
       // Sums over owned nodes only, so that ranks sharing a node count it once.
       const bool owned = !s.owns_node || s.owns_node(keys[node]);
-      const double removed = resolve_contact(s, data, v_new, n_bodies,
+      const SymmetricTensor* stress =
+        s.hold_compressed_surfaces ? &fields.stress_sum[node * n_bodies] : nullptr;
+      const double removed = resolve_contact(s, data, stress, v_new, n_bodies,
                                              owned ? force_local.data() : force_elsewhere.data());
       if (owned)
       {

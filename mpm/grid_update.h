@@ -38,6 +38,13 @@ struct GridUpdateSettings
   double contact_distance = 0.0;
   /// Half-width (m) of the band around contact_distance over which the correction fades in.
   double contact_band = 0.0;
+  /// Contact also where a body's surface is in compression, n . S n < 0 with S its nodal
+  /// stress sum (GridFields::stress_sum), even while the bodies separate (Uintah's criterion).
+  bool hold_compressed_surfaces = false;
+  /// Contact also corrects the projected velocities v^n before the forces act (Uintah's
+  /// friction_bard, two passes); the points' FLIP increments then leave that correction out.
+  /// Not with a subcycled body.
+  bool correct_projected_velocities = false;
   /// When set (distributed runs), contact sums count only the nodes this rank owns.
   std::function<bool(std::int64_t)> owns_node;
 };

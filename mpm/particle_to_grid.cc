@@ -50,7 +50,7 @@ namespace
 template <ShapeFunction shape, bool with_normals, bool affine>
 void scatter(const Particles& particles, const Grid& grid, const TransferSettings& settings,
              const std::size_t b, const ShareRange range, NodeBodyData* fields,
-             NodeBodyData* contested)
+             NodeBodyData* contested, const Vector3* point_force)
 {
   const std::size_t n_bodies = particles.n_bodies();
   const double lp = settings.half_size_cells[b];
@@ -63,6 +63,7 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
     const Tensor2 volume_stress =
         (particles.reference_volume[p] * particles.deformation_gradient[p].determinant()) *
         full_tensor(particles.stress[p]);
+    const Vector3 external = point_force ? point_force[p] : Vector3::Zero();
     auto add = [&](const std::int64_t key, const double w, const Vector3& grad_w,
                    const Vector3& momentum)
     {
@@ -70,7 +71,7 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
       const double wm = w * m;
       node.mass += wm;
       node.momentum += w * momentum;
-      node.force -= volume_stress * grad_w;
+      node.force += w * external - volume_stress * grad_w;
       if constexpr (with_normals)
       {
         node.mass_gradient += m * grad_w;
@@ -93,7 +94,7 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
 
 void particles_to_grid(const Particles& particles, const Grid& grid,
                        const TransferSettings& settings, ScatterBuffers& buffers,
-                       GridFields& fields)
+                       GridFields& fields, const Vector3* point_force)
 {
   fields.n_bodies = particles.n_bodies();
   fields.resize(grid.n_active());
@@ -108,17 +109,51 @@ void particles_to_grid(const Particles& particles, const Grid& grid,
                                    const bool n = settings.contact_normals, a = settings.affine;
                                    if (n && a)
                                      scatter<shape, true, true>(particles, grid, settings, b,
-                                                                range, direct, contested);
+                                                                range, direct, contested,
+                                                                point_force);
                                    else if (n)
                                      scatter<shape, true, false>(particles, grid, settings, b,
-                                                                 range, direct, contested);
+                                                                 range, direct, contested,
+                                                                point_force);
                                    else if (a)
                                      scatter<shape, false, true>(particles, grid, settings, b,
-                                                                 range, direct, contested);
+                                                                 range, direct, contested,
+                                                                point_force);
                                    else
                                      scatter<shape, false, false>(particles, grid, settings, b,
-                                                                  range, direct, contested);
+                                                                  range, direct, contested,
+                                                                point_force);
                                  });
+             });
+}
+
+void scatter_nodal_stress(const Particles& particles, const Grid& grid,
+                          const TransferSettings& settings, ScatterBuffers& buffers,
+                          GridFields& fields)
+{
+  const std::size_t n_bodies = particles.n_bodies();
+  fields.stress_sum.resize(grid.n_active() * n_bodies);
+  with_shape(settings.shape,
+             [&](auto shape_constant)
+             {
+               constexpr ShapeFunction shape = decltype(shape_constant)::value;
+               scatter_by_shares(
+                 grid, particles, SymmetricTensor(SymmetricTensor::Zero()), fields.stress_sum,
+                 buffers.stress_per_share,
+                 [&](const std::size_t b, const ShareRange range, SymmetricTensor* direct,
+                     SymmetricTensor* contested)
+                 {
+                   const double lp = settings.half_size_cells[b];
+                   for (long p = range.begin; p < range.end; ++p)
+                     for_each_node<shape>(grid, lp, particles.position[p],
+                                          particles.deformation_gradient[p],
+                                          [&](const std::int64_t key, const double w, const Vector3&)
+                                          {
+                                            scatter_target(grid, grid.slot(key), n_bodies, b,
+                                                           direct, contested) +=
+                                              w * particles.stress[p];
+                                          });
+                 });
              });
 }
 } // namespace vulnus::mpm

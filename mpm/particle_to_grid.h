@@ -18,8 +18,15 @@ namespace vulnus::mpm
 void mark_active_nodes(const Particles& particles, const TransferSettings& settings, Grid& grid);
 
 /// Fills fields.data (mass, momentum, force, mass gradient) on the nodes mark_active_nodes
-/// numbered.
+/// numbered. point_force, if given, holds an external force on each point (indexed like the
+/// points), spread with the point's weights.
 void particles_to_grid(const Particles& particles, const Grid& grid,
                        const TransferSettings& settings, ScatterBuffers& buffers,
-                       GridFields& fields);
+                       GridFields& fields, const Vector3* point_force = nullptr);
+
+/// Fills fields.stress_sum (sum_p N_i(x_p) sigma_p per node and body) on the active nodes,
+/// for the contact's compression criterion.
+void scatter_nodal_stress(const Particles& particles, const Grid& grid,
+                          const TransferSettings& settings, ScatterBuffers& buffers,
+                          GridFields& fields);
 } // namespace vulnus::mpm

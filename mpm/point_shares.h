@@ -37,6 +37,7 @@ struct ScatterBuffers
 {
   std::vector<std::vector<NodeBodyData>> per_share;
   std::vector<std::vector<Vector3>> momentum_per_share; ///< MUSL re-projection
+  std::vector<std::vector<SymmetricTensor>> stress_per_share; ///< contact's compression criterion
 };
 
 /// The entry a share writes for (node slot, body): the grid field itself, or the share's own

@@ -53,21 +53,6 @@ std::vector<Vector3> contact_force_on_points(const Grid& grid, const TransferSet
   return force;
 }
 
-void ProjectileSubcycle::add_point_forces(const Particles& projectile,
-                                          const std::vector<Vector3>& point_force)
-{
-  const double lp = stages.transfer.half_size_cells[0];
-  with_shape(stages.transfer.shape,
-             [&](auto shape_constant)
-             {
-               constexpr ShapeFunction shape = decltype(shape_constant)::value;
-               for (std::size_t p = 0; p < projectile.size(); ++p)
-                 for_each_node<shape>(grid, lp, projectile.position[p], projectile.deformation_gradient[p],
-                                      [&](const std::int64_t key, const double w, const Vector3&)
-                                      { fields.data[grid.slot(key)].force += w * point_force[p]; });
-             });
-}
-
 SubcycleResult ProjectileSubcycle::advance(Particles& points, const std::vector<Vector3>& point_force,
                                            const double dt, const int n_substeps,
                                            const double flip_fraction)
@@ -92,8 +77,7 @@ SubcycleResult ProjectileSubcycle::advance(Particles& points, const std::vector<
   {
     std::copy(points.velocity.begin(), points.velocity.end(), velocity_before.begin());
     mark_active_nodes(points, stages.transfer, grid);
-    particles_to_grid(points, grid, stages.transfer, buffers, fields);
-    add_point_forces(points, point_force);
+    particles_to_grid(points, grid, stages.transfer, buffers, fields, point_force.data());
     update_grid(grid, stages.grid_update, fields, grid_result);
     for (int f = 0; f < 6; ++f)
       result.support_impulse[f] += grid_result.support_impulse[f];

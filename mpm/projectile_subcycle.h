@@ -66,8 +66,6 @@ public:
                          int n_substeps, double flip_fraction);
 
 private:
-  void add_point_forces(const Particles& projectile, const std::vector<Vector3>& point_force);
-
   Grid grid;
   SubcycleStages stages;
   GridFields fields;

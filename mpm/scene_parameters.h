@@ -68,6 +68,11 @@ struct ContactParameters
   /// Proximity check, in cell sizes (0: off): bodies interact at a node only when their mass
   /// centres there are at most this far apart along the normal after the step's approach.
   double proximity_distance = 0.8;
+  /// Uintah's friction_bard criterion: bodies also interact at a node where a body's surface
+  /// is in compression (n . sigma n < 0 of its nodal stress sum), even while they separate.
+  bool hold_compressed_surfaces = false;
+  /// Uintah's two passes: the projected velocities are corrected too, before the forces act.
+  bool two_passes = false;
 };
 
 /// The scene and the MPM numerics: the background grid is a structured grid of cubic cells of

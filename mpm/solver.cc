@@ -81,6 +81,8 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   grid_settings.friction_coefficient = friction;
   grid_settings.contact_distance = scene.contact.proximity_distance * scene.cell_size;
   grid_settings.contact_band = 0.05 * scene.cell_size;
+  grid_settings.hold_compressed_surfaces = contact_active && scene.contact.hold_compressed_surfaces;
+  grid_settings.correct_projected_velocities = contact_active && scene.contact.two_passes;
   // Any node with mass gets a velocity: p / m is a weighted mean of point velocities even
   // where m is tiny, and zeroing light nodes breaks exact translation.
   grid_settings.mass_tolerance = 0.0;
@@ -343,6 +345,8 @@ void Solver::advance(const double cap)
   mark_active_nodes(particles, transfer, grid);
   n_active_last_step = grid.n_active();
   particles_to_grid(particles, grid, transfer, buffers, fields);
+  if (grid_settings.hold_compressed_surfaces)
+    scatter_nodal_stress(particles, grid, transfer, buffers, fields);
   sum_node_data_with_neighbours();
   lap(timings.particle_to_grid);
 

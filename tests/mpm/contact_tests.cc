@@ -1,12 +1,15 @@
 // Multi-velocity-field contact: momentum conservation and no interpenetration in a
 // collision, Coulomb friction on an incline (analytic acceleration), rigid projectile, and
-// the proximity check (contact starts when the surfaces touch, not a cell before).
+// the proximity check (contact starts when the surfaces touch, not a cell before), and
+// Uintah's compression criterion at one node.
+#include "mpm/grid_update.h"
 #include "mpm/solver.h"
 #include "scene_fixtures.h"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 using namespace vulnus;
@@ -193,4 +196,102 @@ TEST(MpmContact, TwoRigidBodiesMeetingStopTheRun)
   EXPECT_NE(message.find("rigid bodies 'slab' and 'ball' met"), std::string::npos) << message;
   // The ball (50 m/s, 0.5 mm from the wall) meets it within about 1.5 cells of travel.
   EXPECT_LT(solver.time(), 2e-3 / 50.0);
+}
+
+namespace
+{
+/// Two deformable bodies of 1 g at one interior node of a 1 mm grid, body 0 below body 1
+/// (outward normal +y), with friction 0.08 and nothing set on the nodal velocities.
+struct OneContactNode
+{
+  mpm::Grid grid{Vector3::Zero(), Vector3::Constant(4e-3), 1e-3};
+  mpm::GridFields fields;
+  mpm::GridUpdateSettings settings;
+
+  OneContactNode()
+  {
+    grid.clear_active_nodes();
+    grid.mark(grid.node_key(2, 2, 2), 0);
+    grid.number_active_nodes(1);
+    fields.n_bodies = 2;
+    fields.resize(1);
+    fields.stress_sum.assign(2, mpm::SymmetricTensor::Zero());
+    for (int b = 0; b < 2; ++b)
+    {
+      fields.data[b] = mpm::NodeBodyData();
+      fields.data[b].mass = 1e-3;
+      fields.data[b].mass_gradient = Vector3(0.0, b == 0 ? 1.0 : -1.0, 0.0);
+    }
+    settings.time_step = 1e-7;
+    settings.contact = true;
+    settings.friction_coefficient = 0.08;
+    settings.body_is_rigid = {0, 0};
+    settings.rigid_velocity = {Vector3::Zero(), Vector3::Zero()};
+  }
+};
+
+/// The two bodies separating along y at 1 m/s each, with the given nodal stress sum sigma_yy
+/// (n . S n for the normal along y); their velocities after resolve_contacts.
+std::array<Vector3, 2> separating_pair(const bool hold_compressed, const double normal_stress)
+{
+  OneContactNode node;
+  for (int b = 0; b < 2; ++b)
+  {
+    node.fields.stress_sum[b][1] = normal_stress;
+    node.fields.velocity_new[b] = Vector3(0.0, b == 0 ? -1.0 : 1.0, 0.0);
+  }
+  node.settings.hold_compressed_surfaces = hold_compressed;
+  mpm::GridUpdateResult result;
+  mpm::resolve_contacts(node.grid, node.settings, node.fields, result);
+  return {node.fields.velocity_new[0], node.fields.velocity_new[1]};
+}
+} // namespace
+
+TEST(MpmContact, CompressionCriterionHoldsOnlyCompressedSurfacesTogether)
+{
+  // Approach criterion: separating bodies move independently, compressed or not.
+  for (const double stress : {-1e3, 1e3})
+  {
+    const auto v = separating_pair(false, stress);
+    EXPECT_EQ(v[0], Vector3(0.0, -1.0, 0.0));
+    EXPECT_EQ(v[1], Vector3(0.0, 1.0, 0.0));
+  }
+  // Uintah's criterion: a compressed surface holds them (the separation is removed, the
+  // momentum kept); one in tension lets them go.
+  const auto held = separating_pair(true, -1e3);
+  EXPECT_NEAR((held[1] - held[0]).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((held[0] + held[1]).norm(), 0.0, 1e-12);
+  const auto free = separating_pair(true, 1e3);
+  EXPECT_EQ(free[0], Vector3(0.0, -1.0, 0.0));
+  EXPECT_EQ(free[1], Vector3(0.0, 1.0, 0.0));
+}
+
+TEST(MpmContact, SecondPassCorrectsTheProjectedVelocitiesBeforeTheForces)
+{
+  // Two bodies approaching at one node (body 0 below, outward normal +y), no forces: with
+  // Uintah's two passes the projected velocities v^n are corrected already (so FLIP's
+  // increments v_new - v^n leave the correction out); with one pass v^n is as projected.
+  for (const bool two_passes : {false, true})
+  {
+    OneContactNode node;
+    mpm::GridFields& fields = node.fields;
+    for (int b = 0; b < 2; ++b)
+      fields.data[b].momentum = 1e-3 * Vector3(0.0, b == 0 ? 1.0 : -1.0, 0.0);
+    node.settings.correct_projected_velocities = two_passes;
+    mpm::GridUpdateResult result;
+    mpm::update_grid(node.grid, node.settings, fields, result);
+    if (two_passes)
+    {
+      EXPECT_NEAR(fields.velocity[0].norm(), 0.0, 1e-12);
+      EXPECT_NEAR(fields.velocity[1].norm(), 0.0, 1e-12);
+    }
+    else
+    {
+      EXPECT_EQ(fields.velocity[0], Vector3(0.0, 1.0, 0.0));
+      EXPECT_EQ(fields.velocity[1], Vector3(0.0, -1.0, 0.0));
+    }
+    // Either way the second pass leaves no approach after the step.
+    mpm::resolve_contacts(node.grid, node.settings, fields, result);
+    EXPECT_NEAR((fields.velocity_new[0] - fields.velocity_new[1]).y(), 0.0, 1e-12);
+  }
 }

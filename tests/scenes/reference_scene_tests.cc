@@ -99,10 +99,10 @@ TEST(ReferenceScene, UintahReducedSceneAsUintahRunsOnWithStressFreeFailedPoints)
   // The paper's rule: totally failed tissue carries nothing, also where it is crushed, and
   // the run goes on (a failed point its step would invert is crushed to debris).
   const EarlyRun r = run_early("uintah_reduced_as_uintah.prm");
-  // Uintah's choices (no proximity check, plain FLIP, the bullet stepped with the scene)
-  // gain energy: 4 % at 30 us, 5 % over the whole run (docs/uintah_side_by_side.md). The
-  // bound catches a blow-up, not their error.
-  expect_a_bullet_entering(r, 0.08);
+  // Uintah's first contact pass changes velocities that the FLIP increments leave out: the
+  // balance misses 18 % over the whole run, as Uintah's own misses 37 %
+  // (docs/uintah_side_by_side.md). The bound catches a blow-up, not that error.
+  expect_a_bullet_entering(r, 0.3);
   ASSERT_GT(r.totally_failed, 100u);
   EXPECT_EQ(r.totally_failed_with_stress, 0u);
 }
