@@ -173,39 +173,31 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    // v + dt f / m never reaches the scatter through it.
                    if (affine)
                      particles.affine_velocity[p] = L.cast<float>();
-                   const double J_old = (volumetric_rate || averaging) ? F.determinant() : 0.0;
+                   const bool failed = particles.failure[p] != 0;
+                   const bool debris = particles.failure[p] == materials::total_failure;
+                   const double J_old =
+                     (volumetric_rate || averaging || failed) ? F.determinant() : 0.0;
                    if (averaging)
                    {
                      averaging->j_old[p] = J_old;
-                     averaging->cell[p] = particles.failure[p] == materials::total_failure
-                                            ? -1
-                                            : VolumeAveraging::cell_key(grid, x_start);
+                     averaging->cell[p] = debris ? -1 : VolumeAveraging::cell_key(grid, x_start);
                    }
-                   if (particles.failure[p] == materials::total_failure)
+                   if (!debris && midpoint)
+                   {
+                     const Tensor2 half_step = (0.5 * dt) * L;
+                     F = (Tensor2::Identity() - half_step).inverse() *
+                         ((Tensor2::Identity() + half_step) * F);
+                   }
+                   else if (!debris)
+                     F = (Tensor2::Identity() + dt * L) * F;
+                   if (debris || (failed && !(F.determinant() > 0.0)))
                    {
                      // Debris keeps only its volume (its law reads J alone); the exponential
-                     // volume update never inverts it, whatever fragments cross its nodes.
-                     const double J = F.determinant() * std::exp(dt * L.trace());
-                     F = std::cbrt(J) * Tensor2::Identity();
-                   }
-                   else
-                   {
-                     const double J_failed = particles.failure[p] ? F.determinant() : 0.0;
-                     if (midpoint)
-                     {
-                       const Tensor2 half_step = (0.5 * dt) * L;
-                       F = (Tensor2::Identity() - half_step).inverse() *
-                           ((Tensor2::Identity() + half_step) * F);
-                     }
-                     else
-                       F = (Tensor2::Identity() + dt * L) * F;
-                     if (particles.failure[p] && !(F.determinant() > 0.0))
-                     {
-                       // A failed point that this step would invert (no pressure resists
-                       // it under Stress after failure = zero) is crushed to debris.
-                       F = std::cbrt(J_failed * std::exp(dt * L.trace())) * Tensor2::Identity();
-                       particles.failure[p] = materials::total_failure;
-                     }
+                     // volume update never inverts it, whatever fragments cross its nodes. A
+                     // failed point this step would invert (nothing resists it under Stress
+                     // after failure = zero) is crushed to debris.
+                     F = std::cbrt(J_old * std::exp(dt * L.trace())) * Tensor2::Identity();
+                     particles.failure[p] = materials::total_failure;
                    }
                    if (averaging)
                    {

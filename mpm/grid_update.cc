@@ -60,6 +60,14 @@ namespace
 /// n . S n below minus this (Pa, a stress sum) counts as compression: Uintah's 1e-12.
 constexpr double compression_floor = 1e-12;
 
+/// The nodal stress sums of the bodies at active node `node`, when the compression criterion
+/// reads them, else null.
+const SymmetricTensor* nodal_stress(const GridUpdateSettings& s, const GridFields& fields,
+                                    const long node)
+{
+  return s.hold_compressed_surfaces ? &fields.stress_sum[node * fields.n_bodies] : nullptr;
+}
+
 /// Separation along `normal` (the first body's outward normal) of two bodies' mass centres
 /// seen from a node, at the end of the step if nothing acted between them (`closing`: their
 /// approach speed along the normal).
@@ -264,9 +272,8 @@ void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fiel
     {
       // Uintah's first pass: the projected velocities are corrected before the forces act.
       // Nothing is booked: the points' FLIP increments v_new - v leave it out, as Uintah's do.
-      const SymmetricTensor* stress =
-        s.hold_compressed_surfaces ? &fields.stress_sum[node * n_bodies] : nullptr;
-      resolve_contact(s, data, stress, v, n_bodies, unbooked_force.data());
+      resolve_contact(s, data, nodal_stress(s, fields, node), v, n_bodies,
+                      unbooked_force.data());
     }
     for (std::size_t b = 0; b < n_bodies; ++b)
     {
@@ -342,9 +349,7 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
       Vector3* v_new = &fields.velocity_new[node * n_bodies];
       // Sums over owned nodes only, so that ranks sharing a node count it once.
       const bool owned = !s.owns_node || s.owns_node(keys[node]);
-      const SymmetricTensor* stress =
-        s.hold_compressed_surfaces ? &fields.stress_sum[node * n_bodies] : nullptr;
-      const double removed = resolve_contact(s, data, stress, v_new, n_bodies,
+      const double removed = resolve_contact(s, data, nodal_stress(s, fields, node), v_new, n_bodies,
                                              owned ? force_local.data() : force_elsewhere.data());
       if (owned)
       {

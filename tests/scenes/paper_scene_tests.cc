@@ -1,13 +1,12 @@
 // The coarse paper scene, read from its deck and run for a short time: the bullet enters
 // the slab and slows, tissue fails around the tract and only there, and the energy balance
 // (kinetic + strain + dissipated against the initial energy) closes.
-#include "deck/deck_reader.h"
-#include "mpm/solver.h"
+#include "deck_run.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
+#include <memory>
 #include <string>
 
 using namespace vulnus;
@@ -15,12 +14,6 @@ using mpm::Vector3;
 
 namespace
 {
-std::string deck(const std::string& name)
-{
-  const char* dir = std::getenv("VULNUS_SOURCE_DIR");
-  return std::string(dir ? dir : VULNUS_DEFAULT_SOURCE_DIR) + "/inputs/paper/" + name;
-}
-
 struct ShortRun
 {
   double bullet_speed = 0.0;
@@ -33,10 +26,9 @@ struct ShortRun
 
 ShortRun run_briefly(const std::string& deck_name, const std::vector<deck::DeckOverride>& overrides)
 {
-  const deck::RunParameters parameters = deck::read_run_parameters(deck(deck_name), overrides);
-  mpm::Solver solver(parameters.scene);
-  while (!solver.finished())
-    solver.advance();
+  const std::unique_ptr<mpm::Solver> run =
+    scene_tests::run_to_end(scene_tests::input_deck("paper/" + deck_name), overrides);
+  const mpm::Solver& solver = *run;
   const mpm::SceneDiagnostics d = solver.diagnostics();
   ShortRun r;
   const int bullet = solver.projectile();
@@ -52,9 +44,7 @@ ShortRun run_briefly(const std::string& deck_name, const std::vector<deck::DeckO
     r.farthest_failure_from_axis = std::max(r.farthest_failure_from_axis, std::hypot(x[0], x[2]));
     r.deepest_failure = std::max(r.deepest_failure, x[1]);
   }
-  const double accounted = d.kinetic_energy + d.strain_energy + d.dissipated_energy +
-                           solver.contact_dissipation() + solver.removed_energy();
-  r.energy_error = (accounted - solver.initial_energy()) / solver.initial_energy();
+  r.energy_error = scene_tests::energy_balance_error(solver, d);
   return r;
 }
 } // namespace

@@ -2,26 +2,19 @@
 // modelling choice as Uintah makes it, run for the first 30 microseconds: the bullet enters
 // and slows, tissue fails around the tract, the energy balance closes, and each deck's
 // stress-after-failure rule holds at its failed points.
-#include "deck/deck_reader.h"
+#include "deck_run.h"
 #include "materials/two_surface_failure.h"
-#include "mpm/solver.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
+#include <memory>
 #include <string>
 
 using namespace vulnus;
 
 namespace
 {
-std::string reference_deck(const std::string& name)
-{
-  const char* dir = std::getenv("VULNUS_SOURCE_DIR");
-  return std::string(dir ? dir : VULNUS_DEFAULT_SOURCE_DIR) + "/inputs/reference/" + name;
-}
-
 struct EarlyRun
 {
   double bullet_speed = 0.0;
@@ -36,12 +29,10 @@ struct EarlyRun
 
 EarlyRun run_early(const std::string& deck_name)
 {
-  const deck::RunParameters parameters = deck::read_run_parameters(
-    reference_deck(deck_name),
+  const std::unique_ptr<mpm::Solver> run = scene_tests::run_to_end(
+    scene_tests::input_deck("reference/" + deck_name),
     {{"Time/End time=3e-5", "test"}, {"Output/Particle output interval=0", "test"}});
-  mpm::Solver solver(parameters.scene);
-  while (!solver.finished())
-    solver.advance();
+  const mpm::Solver& solver = *run;
   const mpm::SceneDiagnostics d = solver.diagnostics();
   EarlyRun r;
   const int bullet = solver.projectile();
@@ -63,9 +54,7 @@ EarlyRun run_early(const std::string& deck_name)
       ++r.totally_failed_with_stress;
     r.largest_failed_pressure = std::max(r.largest_failed_pressure, -sigma.trace() / 3.0);
   }
-  const double accounted = d.kinetic_energy + d.strain_energy + d.dissipated_energy +
-                           solver.contact_dissipation() + solver.removed_energy();
-  r.energy_error = (accounted - solver.initial_energy()) / solver.initial_energy();
+  r.energy_error = scene_tests::energy_balance_error(solver, d);
   return r;
 }
 
