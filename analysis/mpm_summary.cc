@@ -138,6 +138,21 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
     bullet["max_von_mises_over_yield"] = solver.peak_von_mises_over_yield()[projectile];
     bullet["position_m"] = {b.centroid[0], b.centroid[1], b.centroid[2]};
     bullet["rigid"] = solver.body_material(projectile).is_rigid();
+    const mpm::RigidHold& hold = solver.projectile_hold();
+    const mpm::RigidHoldRecord& held = hold.record();
+    if (held.applies || !held.reason.empty())
+      bullet["rigid_hold"] = {
+        {"held_now", held.held},
+        {"held_from_start", held.held || held.release_step >= 0},
+        {"release_step", held.release_step >= 0 ? nlohmann::json(held.release_step) : nlohmann::json()},
+        {"release_time_s", held.release_step >= 0 ? nlohmann::json(held.release_time) : nlohmann::json()},
+        {"reason", held.reason},
+        {"impact_pressure_Pa", held.impact_pressure},
+        {"peak_contact_pressure_Pa", held.peak_pressure},
+        {"peak_contact_pressure_time_s", held.peak_pressure_time},
+        {"contact_pressure_limit_Pa", hold.pressure_limit()},
+        {"rotation_drift_m", held.rotation_drift},
+        {"rotation_drift_limit_m", hold.drift_limit()}};
     j["penetration"] = penetration_json(solver.penetration());
     // Fastest point of the other bodies over the run, against the projectile's initial speed.
     double fastest = 0.0;

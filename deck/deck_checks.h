@@ -15,6 +15,9 @@ namespace vulnus::deck
 std::vector<std::string> check_run_parameters(const RunParameters& parameters,
                                               const EntryLocator& locator);
 
+/// Whether the body's law is rigid (false for an unknown material).
+bool body_is_rigid(const mpm::SceneParameters& scene, const mpm::BodyParameters& body);
+
 /// Name of the deck subsection holding a material model's entries ("Elastic plastic" for
 /// the model "elastic plastic").
 std::string model_subsection(const std::string& model);

@@ -1,6 +1,8 @@
 // Pure-FE and hybrid checks of a deck, with the deck location of the entries involved.
 #include "deck/method_checks.h"
 
+#include "deck/deck_checks.h"
+
 #include "coupling/decomposition.h"
 #include "fem/fe_scene_of_body.h"
 #include "materials/material_registry.h"
@@ -12,14 +14,6 @@ namespace vulnus::deck
 {
 namespace
 {
-bool body_is_rigid(const mpm::SceneParameters& scene, const mpm::BodyParameters& body)
-{
-  for (const mpm::NamedMaterial& m : scene.materials)
-    if (m.name == body.material)
-      return materials::create_material(m.parameters)->is_rigid();
-  return false;
-}
-
 /// The deck entry of a parameter a library named (check_decomposition, fem::check_parameters),
 /// for a scene whose far field is meshed from body `body`.
 std::string entry_of(std::string parameter, const std::string& body)

@@ -30,6 +30,21 @@ void declare_time_section(EntryTable& table)
                 "wound only through the contact, so its substeps may be longer than the "
                 "target's steps need to be (docs/converged_wound.md, \"The projectile's own "
                 "step\").");
+  table.declare("Rigid projectile while elastic", "true", Patterns::Bool(),
+                "A deformable projectile whose law has a yield stress (elastic plastic) moves "
+                "as a rigid body, without stress update or substeps, while the contact keeps it "
+                "far below yield: the contact pressure on it (the largest nodal contact force "
+                "over h^2, averaged over the time it takes to cross a cell) stays below Rigid "
+                "projectile stress limit times its yield stress, and the contact's moment would "
+                "turn it by less than a tenth of a cell. It is not held at all when the "
+                "acoustic impact pressure v Zp Zt / (Zp + Zt) on the stiffest target already "
+                "exceeds that limit. At the first step a check fails it turns deformable for "
+                "the rest of the run; the log and summary.json (bullet.rigid_hold) say when and "
+                "why, or report the peaks against the limits (docs/uintah_side_by_side.md, "
+                "\"The projectile's substeps\"). false: deformable from the start.");
+  table.declare("Rigid projectile stress limit", "0.5", Patterns::Double(0.0, 1.0),
+                "Fraction of its yield stress the averaged contact pressure on a projectile held "
+                "rigid may reach (Rigid projectile while elastic), in (0, 1].");
   table.declare("Artificial viscosity linear", "0.06", Patterns::Double(0.0),
                 "Linear bulk viscosity coefficient q1 [-] of the shock viscosity q = rho (q1 c h "
                 "|tr D| + q2 h^2 (tr D)^2), acting in compression only (0: off). The default, "
@@ -70,6 +85,8 @@ void parse_time_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   scene.cfl = prm.get_double("CFL");
   scene.subcycle_projectile = prm.get_bool("Subcycle projectile");
   scene.projectile_cfl = prm.get_double("Projectile CFL");
+  scene.rigid_projectile_while_elastic = prm.get_bool("Rigid projectile while elastic");
+  scene.rigid_projectile_stress_limit = prm.get_double("Rigid projectile stress limit");
   scene.artificial_viscosity_linear = prm.get_double("Artificial viscosity linear");
   scene.artificial_viscosity_quadratic = prm.get_double("Artificial viscosity quadratic");
   scene.max_time_step = prm.get_double("Maximum time step");

@@ -116,6 +116,9 @@ public:
   virtual bool has_plastic_history() const { return false; }
   /// The two-surface failure criterion of the law, or null when it has none.
   virtual const FailureParameters* failure_criterion() const { return nullptr; }
+  /// The von Mises stress (Pa) below which the law responds elastically, before any rate
+  /// factor; 0 when the law has no such limit.
+  virtual double elastic_limit_stress() const { return 0.0; }
 
   /// Update one point: F the total deformation gradient, a0 the unit reference fiber
   /// direction (ignored without fibers), reached over time_step from the stored state (0:

@@ -52,6 +52,7 @@ public:
 
   std::string model_name() const override { return "elastic plastic"; }
   bool has_plastic_history() const override { return true; }
+  double elastic_limit_stress() const override { return prm.yield_stress; }
 
   using Material::tangent;
 

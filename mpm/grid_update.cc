@@ -306,6 +306,8 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
   const std::size_t n_bodies = fields.n_bodies;
   const long n_nodes = static_cast<long>(grid.n_active());
   result.contact_force.assign(n_bodies, Vector3::Zero());
+  result.peak_node_force.assign(n_bodies, 0.0);
+  result.contact_moment.assign(n_bodies, Vector3::Zero());
   result.contact_dissipation = 0.0;
   result.n_contact_nodes = 0;
   result.rigid_meeting_node = -1;
@@ -317,6 +319,8 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
 #pragma omp parallel reduction(+ : dissipation, n_contact_nodes)
   {
     std::vector<Vector3> force_local(n_bodies, Vector3::Zero());
+    std::vector<double> peak_local(n_bodies, 0.0);
+    std::vector<Vector3> moment_local(n_bodies, Vector3::Zero());
     std::vector<Vector3> force_elsewhere(n_bodies, Vector3::Zero()); // another rank's node
     std::array<Vector3, 6> impulse_local, impulse_elsewhere;
     impulse_local.fill(Vector3::Zero());
@@ -349,8 +353,18 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
       Vector3* v_new = &fields.velocity_new[node * n_bodies];
       // Sums over owned nodes only, so that ranks sharing a node count it once.
       const bool owned = !s.owns_node || s.owns_node(keys[node]);
-      const double removed = resolve_contact(s, data, nodal_stress(s, fields, node), v_new, n_bodies,
-                                             owned ? force_local.data() : force_elsewhere.data());
+      Vector3* force = owned ? force_local.data() : force_elsewhere.data();
+      const std::size_t rigid = rigid_present[0];
+      const Vector3 rigid_force_before = force[rigid];
+      const double removed =
+        resolve_contact(s, data, nodal_stress(s, fields, node), v_new, n_bodies, force);
+      if (n_rigid == 1)
+      {
+        const Vector3 on_rigid = force[rigid] - rigid_force_before;
+        peak_local[rigid] = std::max(peak_local[rigid], on_rigid.norm());
+        if (owned)
+          moment_local[rigid] += grid.node_position(keys[node]).cross(on_rigid);
+      }
       if (owned)
       {
         ++n_contact_nodes;
@@ -364,7 +378,11 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
 #pragma omp critical
     {
       for (std::size_t b = 0; b < n_bodies; ++b)
+      {
         result.contact_force[b] += force_local[b];
+        result.peak_node_force[b] = std::max(result.peak_node_force[b], peak_local[b]);
+        result.contact_moment[b] += moment_local[b];
+      }
       for (int f = 0; f < 6; ++f)
         result.support_impulse[f] += impulse_local[f];
     }

@@ -52,6 +52,10 @@ struct GridUpdateSettings
 struct GridUpdateResult
 {
   std::vector<Vector3> contact_force; ///< per body, force the others exert on it (N)
+  /// Per rigid body, the largest contact force the others exert on it at one node (N).
+  std::vector<double> peak_node_force;
+  /// Per rigid body, the moment of the contact forces about the point x = 0 (N m).
+  std::vector<Vector3> contact_moment;
   double contact_dissipation = 0.0;   ///< kinetic energy removed by contact this step (J)
   std::size_t n_contact_nodes = 0;    ///< nodes where two or more bodies met
   /// Two rigid bodies at one node (neither can give way: not modelled): the lowest such node

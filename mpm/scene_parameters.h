@@ -99,6 +99,12 @@ struct SceneParameters : scene::SceneDescription
   /// elastic response reaches the wound only through the contact, so 0.4 changes no wound
   /// figure by more than a halving of the scene's step does (docs/converged_wound.md).
   double projectile_cfl = 0.4;
+  /// A deformable projectile whose law has a yield stress moves as a rigid body while the
+  /// contact keeps it far below yield, and turns deformable at the first step that does not
+  /// (mpm/rigid_hold.h): the stress limit is the fraction of its yield stress the averaged
+  /// contact pressure may reach.
+  bool rigid_projectile_while_elastic = false;
+  double rigid_projectile_stress_limit = 0.5;
   DeformationUpdate deformation_update = DeformationUpdate::midpoint;
   /// Each step's volume change of a point replaced by its cell's (mpm/volume_averaging.h):
   /// free of volumetric locking for nearly incompressible tissue.

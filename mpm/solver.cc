@@ -134,6 +134,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   // F = I, so this gives the small-strain moduli for the first CFL step).
   stress_settings.time_step = 0.0;
   update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
+  begin_rigid_hold();
   plan_projectile_subcycle();
   sort_points();
   const SceneDiagnostics d = diagnostics();
@@ -145,6 +146,12 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
 void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& field,
                                   const int body)
 {
+  if (rigid_hold.record().held && (body < 0 || body == projectile_body))
+  {
+    rigid_hold.release("its points were given a velocity field", static_cast<long>(n_steps),
+                       current_time);
+    make_projectile_deformable();
+  }
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
     if (!grid_settings.body_is_rigid[b] && (body < 0 || static_cast<int>(b) == body))
       for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
@@ -156,13 +163,7 @@ void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& 
 
 bool Solver::projectile_is_far_stiffer() const
 {
-  // Impedance rho c of each deformable body at the start (its stiffest point), over all ranks.
-  std::vector<double> impedance(particles.n_bodies(), 0.0);
-  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
-    if (!grid_settings.body_is_rigid[b])
-      for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
-        impedance[b] = std::max(impedance[b], parameters.bodies[b].density * particles.wave_speed[p]);
-  ranks.max(impedance.data(), static_cast<int>(impedance.size()));
+  const std::vector<double> impedance = body_impedances();
   for (std::size_t b = 0; b < impedance.size(); ++b)
     if (static_cast<int>(b) != projectile_body && !grid_settings.body_is_rigid[b] &&
         impedance[projectile_body] < minimum_impedance_ratio * impedance[b])
@@ -364,6 +365,8 @@ void Solver::advance(const double cap)
   if (const RunFailure failure = ranks.first_failure(rigid_meeting_problem(dt)); !failure.empty())
     throw BlowUp(failure);
   reduce_contact_result();
+  const Vector3 held_velocity =
+    rigid_hold.record().held ? grid_settings.rigid_velocity[projectile_body] : Vector3::Zero();
   accumulated_contact_dissipation += grid_result.contact_dissipation;
   for (int f = 0; f < 6; ++f)
     support_impulse_here[f] += grid_result.support_impulse[f];
@@ -435,6 +438,8 @@ void Solver::advance(const double cap)
       for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
         particles.velocity[p] = grid_settings.rigid_velocity[b];
     }
+  if (rigid_hold.record().held && check_rigid_hold(dt, held_velocity))
+    make_projectile_deformable();
   lap(timings.stress_update);
 
   current_time += dt;

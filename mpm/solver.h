@@ -19,6 +19,7 @@
 #include "mpm/projectile_penetration.h"
 #include "mpm/projectile_subcycle.h"
 #include "mpm/rank_group.h"
+#include "mpm/rigid_hold.h"
 #include "mpm/scene_parameters.h"
 #include "mpm/slab_partition.h"
 #include "mpm/stress_update.h"
@@ -201,6 +202,9 @@ public:
   /// deformable projectile with 10 times the others' impedance), and how many it took in the
   /// last step (0: not subcycled).
   bool subcycles_projectile() const { return subcycle != nullptr; }
+  /// The deformable projectile held rigid while elastic (Time/Rigid projectile while
+  /// elastic): whether it applies, is held now, and why it was released or never held.
+  const RigidHold& projectile_hold() const { return rigid_hold; }
   int last_projectile_substeps() const { return n_projectile_substeps; }
   const PhaseTimes& phase_times() const { return timings; }
 
@@ -217,6 +221,17 @@ private:
   /// Builds the projectile's subcycle when the scene asks for one and it applies (a
   /// deformable projectile far stiffer than the others).
   void plan_projectile_subcycle();
+  /// Impedance rho c of each deformable body at the start (its stiffest point), 0 for rigid
+  /// ones. Collective.
+  std::vector<double> body_impedances() const;
+  /// Holds the deformable projectile rigid when the scene asks and the impact allows it
+  /// (mpm/rigid_hold.h). Collective.
+  void begin_rigid_hold();
+  /// After this step's contact: the hold's checks. Returns whether they released it.
+  bool check_rigid_hold(double dt, const Vector3& velocity_over_step);
+  /// Makes the released projectile deformable (subcycled when the scene asks) from the next
+  /// step on.
+  void make_projectile_deformable();
   /// The projectile's substeps over this step dt (after the other bodies' step). Distributed,
   /// every rank advances the whole projectile (gathered from all) and keeps its own points.
   void advance_projectile_substeps(double dt);
@@ -285,6 +300,7 @@ private:
   SharedNodeState shared_state;
   std::vector<Vector3> shared_velocity_start, shared_velocity_end;
   std::unique_ptr<ProjectileSubcycle> subcycle;
+  RigidHold rigid_hold;
   std::vector<Vector3> projectile_trial_velocity; ///< per active node, before contact
   std::vector<Vector3> projectile_contact_force;  ///< per projectile point of this rank
   int n_projectile_substeps = 0;

@@ -14,7 +14,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '7'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '8'};
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -56,6 +56,8 @@ void Solver::save(std::ostream& out) const
   put(out, static_cast<std::uint64_t>(exit_record.past_exit_plane));
   put(out, static_cast<std::uint64_t>(projectile_reached_target));
   put_vector(out, penetration_record.packed());
+  put_vector(out, rigid_hold.packed());
+  put_text(out, rigid_hold.record().reason);
   for (const Vector3& impulse : support_impulse_here)
     put(out, impulse);
   put(out, static_cast<std::uint64_t>(ranks.size()));
@@ -118,6 +120,10 @@ void Solver::restore(std::istream& in)
   get(in, reached_target);
   std::vector<double> penetration_packed;
   get_vector(in, penetration_packed);
+  std::vector<double> hold_packed;
+  std::string hold_reason;
+  get_vector(in, hold_packed);
+  get_text(in, hold_reason);
   exit_loaded.recorded = exit_recorded != 0;
   exit_loaded.past_exit_plane = past_exit_plane != 0;
   std::array<Vector3, 6> supports_loaded;
@@ -185,6 +191,16 @@ void Solver::restore(std::istream& in)
                         static_cast<std::uint32_t>(departed_packed[k + 5])});
   exit_record = exit_loaded;
   penetration_record.unpack(penetration_packed);
+  const bool held_before = rigid_hold.record().held;
+  rigid_hold.unpack(hold_packed, hold_reason);
+  if (held_before != rigid_hold.record().held)
+  {
+    if (!held_before)
+      throw std::runtime_error("checkpoint holds the projectile rigid while this deck does not "
+                               "(Time/Rigid projectile while elastic): restart with the deck "
+                               "that wrote it");
+    make_projectile_deformable();
+  }
   projectile_reached_target = reached_target != 0;
   support_impulse_here = supports_loaded;
 }

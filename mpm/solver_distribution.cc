@@ -208,13 +208,20 @@ void Solver::reduce_contact_result()
   std::vector<double> sums;
   for (const Vector3& f : grid_result.contact_force)
     sums.insert(sums.end(), {f[0], f[1], f[2]});
+  for (const Vector3& m : grid_result.contact_moment)
+    sums.insert(sums.end(), {m[0], m[1], m[2]});
   sums.push_back(grid_result.contact_dissipation);
   sums.push_back(double(grid_result.n_contact_nodes));
   ranks.sum(sums.data(), static_cast<int>(sums.size()));
   for (std::size_t b = 0; b < n_bodies; ++b)
+  {
     grid_result.contact_force[b] = Vector3(sums[3 * b], sums[3 * b + 1], sums[3 * b + 2]);
-  grid_result.contact_dissipation = sums[3 * n_bodies];
-  grid_result.n_contact_nodes = static_cast<std::size_t>(sums[3 * n_bodies + 1]);
+    const std::size_t m = 3 * (n_bodies + b);
+    grid_result.contact_moment[b] = Vector3(sums[m], sums[m + 1], sums[m + 2]);
+  }
+  grid_result.contact_dissipation = sums[6 * n_bodies];
+  grid_result.n_contact_nodes = static_cast<std::size_t>(sums[6 * n_bodies + 1]);
+  ranks.max(grid_result.peak_node_force.data(), static_cast<int>(n_bodies));
 }
 
 SceneDiagnostics Solver::diagnostics() const

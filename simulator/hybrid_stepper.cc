@@ -4,6 +4,7 @@
 #include "analysis/wound_sample.h"
 #include "io/run_directory.h"
 #include "simulator/hybrid_history.h"
+#include "simulator/rigid_hold_report.h"
 
 #include <omp.h>
 
@@ -85,6 +86,8 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
       << solver.n_interface_nodes_across_ranks()
       << " interface nodes have their FE owner and MPM slab on different ranks)";
   directory.log(o.str());
+  if (const std::string hold = rigid_hold_scene_line(solver.mpm()); !hold.empty())
+    directory.log(hold);
 }
 
 std::string HybridStepper::progress() const
@@ -124,6 +127,9 @@ std::string HybridStepper::blow_up_remedy() const
 std::vector<std::string> HybridStepper::events()
 {
   std::vector<std::string> lines;
+  if (const std::string release = rigid_hold_release_event(solver.mpm(), hold_release_reported);
+      !release.empty())
+    lines.push_back(release);
   const std::vector<coupling::ZoneConversion>& done = solver.conversions();
   for (; conversions_logged < done.size(); ++conversions_logged)
   {

@@ -56,11 +56,13 @@ public:
     solver.restore(in);
     monitors.restore(in);
     conversions_logged = solver.conversions().size();
+    hold_release_reported = solver.mpm().projectile_hold().record().release_step >= 0;
   }
 
 private:
   coupling::HybridSolver solver;
   std::size_t conversions_logged = 0;
+  bool hold_release_reported = false;
   ProjectileStart projectile;
   double initial_energy; ///< J, of the whole scene at t = 0
   Eigen::Vector3d initial_momentum; ///< kg m/s, of the whole scene at t = 0

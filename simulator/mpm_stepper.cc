@@ -4,6 +4,7 @@
 #include "analysis/wound_sample.h"
 #include "io/run_directory.h"
 #include "simulator/mpm_history.h"
+#include "simulator/rigid_hold_report.h"
 
 #include <omp.h>
 
@@ -25,7 +26,8 @@ std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver)
 {
   std::vector<std::string> warnings;
   if (solver.projectile() >= 0 && !solver.body_material(solver.projectile()).is_rigid() &&
-      !solver.scene().subcycle_projectile && solver.uses_contact())
+      !solver.scene().subcycle_projectile && solver.uses_contact() &&
+      !solver.projectile_hold().record().held)
     warnings.push_back(
       "the deformable projectile was not subcycled (Time/Subcycle projectile = false): its "
       "wound is not converged in the time step (in the paper scenes its exit velocity falls "
@@ -108,6 +110,8 @@ void MpmStepper::log_scene(io::RunDirectory& directory) const
               "the contact";
     directory.log(line.str());
   }
+  if (const std::string hold = rigid_hold_scene_line(solver); !hold.empty())
+    directory.log(hold);
   std::ostringstream contact;
   contact << "  contact: ";
   if (solver.uses_contact() && scene.contact.enabled)
@@ -152,6 +156,12 @@ std::vector<double> MpmStepper::history_row() const
 }
 
 std::vector<std::string> MpmStepper::final_warnings() const { return mpm_final_warnings(solver); }
+
+std::vector<std::string> MpmStepper::events()
+{
+  const std::string release = rigid_hold_release_event(solver, hold_release_reported);
+  return release.empty() ? std::vector<std::string>{} : std::vector<std::string>{release};
+}
 
 nlohmann::json MpmStepper::summary(const analysis::RunTotals& run) const
 {
@@ -230,7 +240,8 @@ std::string projectile_note(const mpm::Solver& solver)
     elastic_projectile_note(solver.phase_times().projectile_substeps, solver.phase_times().total(),
                             solver.peak_von_mises_over_yield()[body],
                             solver.scene().bodies[body].material);
-  return note.empty() ? note : "\n" + note;
+  const std::string hold = rigid_hold_final_note(solver);
+  return (note.empty() ? note : "\n" + note) + (hold.empty() ? hold : "\n" + hold);
 }
 
 std::string bullet_report(const nlohmann::json& summary)

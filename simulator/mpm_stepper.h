@@ -60,6 +60,7 @@ public:
 
   std::vector<std::string> history_columns() const override;
   std::vector<double> history_row() const override;
+  std::vector<std::string> events() override;
   std::vector<std::string> final_warnings() const override;
   nlohmann::json summary(const analysis::RunTotals& totals) const override;
   std::string final_report(const nlohmann::json& summary) const override;
@@ -68,11 +69,16 @@ public:
 
   bool can_checkpoint() const override { return true; }
   void save(std::ostream& out) const override { solver.save(out); }
-  void restore(std::istream& in) override { solver.restore(in); }
+  void restore(std::istream& in) override
+  {
+    solver.restore(in);
+    hold_release_reported = solver.projectile_hold().record().release_step >= 0;
+  }
 
 private:
   mpm::Solver solver;
   std::size_t n_points_at_start;
   ProjectileStart projectile; ///< from the initial state, before any restart
+  bool hold_release_reported = false;
 };
 } // namespace vulnus::simulator

@@ -5,88 +5,13 @@
 // that, conserve momentum and book the energy it takes. Subcycled (the default), the ball
 // must behave like a rigid ball at the gel's step, converge in that step, and conserve
 // momentum exactly.
-#include "mpm/solver.h"
-#include "scene_fixtures.h"
+#include "copper_ball.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-using namespace vulnus;
-using mpm::Vector3;
-
-namespace
-{
-struct BallRun
-{
-  double peak_yield_ratio = 0.0; ///< max von Mises / flow stress of the ball over the run
-  double ball_velocity = 0.0;    ///< m/s along the flight
-  double momentum_error = 0.0;   ///< |p_end - p_start| / |p_start|
-  double balance_error = 0.0;    ///< (E - E0) / E0 with the dissipation and contact losses
-  double gel_kinetic_energy = 0.0; ///< J at the end
-  std::size_t steps = 0;
-  double time_step = 0.0;        ///< the last scene step (s)
-  int substeps = 0;              ///< the ball's most substeps in a step
-  bool subcycled = false;
-};
-
-struct BallSettings
-{
-  double relaxation = 0.1; ///< Grid/Projectile velocity relaxation (the deck default)
-  bool subcycle = true;
-  bool rigid = false;
-  double cfl = 0.2;
-  bool copper = true; ///< false: the ball is of the slab's gel
-  double projectile_cfl = 0.4; ///< Time/Projectile CFL (the deck default)
-};
-
-BallRun fire_copper_ball(const BallSettings& settings)
-{
-  BallRun run;
-  mpm::SceneParameters scene =
-    test::empty_scene(Vector3(-8e-3, -6e-3, -8e-3), Vector3(8e-3, 10e-3, 8e-3), 1e-3);
-  scene.projectile_velocity_relaxation = settings.relaxation;
-  scene.subcycle_projectile = settings.subcycle;
-  scene.cfl = settings.cfl;
-  scene.projectile_cfl = settings.projectile_cfl;
-  scene.artificial_viscosity_linear = 0.06; // the deck defaults
-  scene.artificial_viscosity_quadratic = 1.5;
-  scene.end_time = 30e-6; // the ball's nose 4 mm into the 6 mm slab
-  scene.materials.push_back(test::elastic_material("gel", 2e5, 2.1e3));
-  mpm::NamedMaterial copper = test::rigid_material("copper");
-  if (!settings.rigid)
-    copper.parameters.model = "elastic plastic"; // the paper's bullet: K 117 GPa, mu 53.8 GPa
-  scene.materials.push_back(copper);
-  scene.bodies.push_back(test::box_body("slab", "gel", Vector3(-8e-3, 0, -8e-3),
-                                        Vector3(8e-3, 6e-3, 8e-3), 1060.0, 2));
-  mpm::BodyParameters ball = test::sphere_body("ball", settings.copper ? "copper" : "gel",
-                                               Vector3(0, -3e-3, 0), 2.5e-3, 8930.0, 2);
-  ball.initial_velocity = Vector3(0, 150, 0);
-  ball.is_projectile = true;
-  scene.bodies.push_back(ball);
-  mpm::Solver solver(scene);
-  run.subcycled = solver.subcycles_projectile();
-  const mpm::SceneDiagnostics start = solver.diagnostics();
-  int substeps = 0;
-  while (!solver.finished())
-  {
-    solver.advance();
-    substeps = std::max(substeps, solver.last_projectile_substeps());
-  }
-  const mpm::SceneDiagnostics end = solver.diagnostics();
-  run.peak_yield_ratio = solver.peak_von_mises_over_yield()[1];
-  run.ball_velocity = end.bodies[1].velocity[1];
-  run.momentum_error = (end.momentum - start.momentum).norm() / start.momentum.norm();
-  const double initial = solver.initial_energy();
-  run.balance_error = (end.kinetic_energy + end.strain_energy + end.dissipated_energy +
-                       solver.contact_dissipation() - initial) / initial;
-  run.gel_kinetic_energy = end.bodies[0].kinetic_energy;
-  run.steps = solver.step_count();
-  run.time_step = solver.last_time_step();
-  run.substeps = substeps;
-  return run;
-}
-} // namespace
+using namespace vulnus::test;
 
 TEST(MpmStiffProjectile, RelaxationKeepsTheBallElasticAndConservesMomentum)
 {

@@ -68,22 +68,34 @@ TEST(SceneWarnings, AProjectileLeavingTheGridInPartIsFlagged)
 }
 
 // An elastic-plastic bullet stepped with the scene gives a wound that drifts with the step:
-// the run says so and names the entry; subcycled (the default) it says nothing about it.
+// the run says so and names the entry; subcycled it says nothing about it, nor when the
+// bullet is held rigid while elastic (the default), which the log says instead.
 TEST(SceneWarnings, AnUnsubcycledDeformableProjectileIsFlagged)
 {
   ScratchDirectory scratch("scene_warning_unsubcycled");
   const std::string elastic_plastic_run = short_paper_run +
                                           "--set 'Material bullet/Model=elastic plastic' ";
-  const CommandResult stepped = run_vulnus(
-    elastic_plastic_run + "--set 'Time/Subcycle projectile=false' --output stepped", scratch.path);
+  const std::string deformable = "--set 'Time/Rigid projectile while elastic=false' ";
+  const CommandResult stepped =
+    run_vulnus(elastic_plastic_run + deformable +
+                 "--set 'Time/Subcycle projectile=false' --output stepped",
+               scratch.path);
   ASSERT_EQ(stepped.exit_status, 0) << stepped.out << stepped.err;
   EXPECT_TRUE(mentions(warnings_of(scratch.path / "stepped"),
                        "not subcycled (Time/Subcycle projectile = false)"));
-  const CommandResult subcycled = run_vulnus(elastic_plastic_run + "--output subcycled",
-                                             scratch.path);
+  const CommandResult subcycled =
+    run_vulnus(elastic_plastic_run + deformable + "--output subcycled", scratch.path);
   ASSERT_EQ(subcycled.exit_status, 0) << subcycled.out << subcycled.err;
   EXPECT_FALSE(mentions(warnings_of(scratch.path / "subcycled"), "not subcycled"));
   EXPECT_NE(read_text(scratch.path / "subcycled" / "log.txt").find("subcycled: substeps"),
+            std::string::npos);
+  const CommandResult held = run_vulnus(
+    elastic_plastic_run + "--set 'Time/Subcycle projectile=false' --output held", scratch.path);
+  ASSERT_EQ(held.exit_status, 0) << held.out << held.err;
+  EXPECT_FALSE(mentions(warnings_of(scratch.path / "held"), "not subcycled"));
+  const std::string log = read_text(scratch.path / "held" / "log.txt");
+  EXPECT_NE(log.find("held rigid while elastic: acoustic impact pressure"), std::string::npos);
+  EXPECT_NE(log.find("projectile held rigid while elastic to the end: peak contact pressure"),
             std::string::npos);
 }
 
