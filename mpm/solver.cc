@@ -422,10 +422,12 @@ void Solver::advance(const double cap)
     peak_yield_ratio[b] = std::max(peak_yield_ratio[b], yield_ratio[b]);
 
   // Free rigid bodies respond to the contact force (translation only); a prescribed motion
-  // is held against it from outside, and gravity acts on the deformable bodies.
+  // is held against it from outside, and gravity acts on the deformable bodies, the
+  // projectile held rigid while elastic among them.
+  const int held = rigid_hold.record().held ? projectile_body : -1;
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
   {
-    if (!grid_settings.body_is_rigid[b])
+    if (!grid_settings.body_is_rigid[b] || static_cast<int>(b) == held)
       accumulated_external_impulse += dt * body_mass[b] * parameters.gravity;
     else if (parameters.bodies[b].rigid_motion != RigidMotion::free)
       accumulated_external_impulse -= dt * grid_result.contact_force[b];
@@ -434,6 +436,8 @@ void Solver::advance(const double cap)
     if (grid_settings.body_is_rigid[b] && parameters.bodies[b].rigid_motion == RigidMotion::free)
     {
       grid_settings.rigid_velocity[b] += dt * grid_result.contact_force[b] / body_mass[b];
+      if (static_cast<int>(b) == held)
+        grid_settings.rigid_velocity[b] += dt * parameters.gravity;
       kinematics.rigid_velocity[b] = grid_settings.rigid_velocity[b];
       for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
         particles.velocity[p] = grid_settings.rigid_velocity[b];

@@ -236,3 +236,26 @@ TEST(RigidHoldScene, ACheckpointKeepsTheHoldAndItsRelease)
   mpm::Solver other(copper_ball_scene(deformable));
   EXPECT_THROW(other.restore(checkpoint), std::runtime_error);
 }
+
+TEST(RigidHoldScene, AHeldBallFallsAsTheDeformableBallWould)
+{
+  // Gravity acts on the deformable bodies; the held ball stands in for one, so it falls with
+  // the gel (the ball at rest beside it: no contact), gaining g t, and the external impulse
+  // counts it.
+  BallSettings held_settings;
+  held_settings.hold = true;
+  mpm::SceneParameters scene = copper_ball_scene(held_settings);
+  scene.bodies[1].initial_velocity = Vector3::Zero();
+  scene.gravity = Vector3(0, 0, -1e5); // large enough to see in two steps
+  mpm::Solver solver(scene);
+  const double mass = solver.diagnostics().bodies[1].mass;
+  solver.advance();
+  solver.advance();
+  ASSERT_TRUE(solver.projectile_hold().record().held);
+  const Vector3 v = solver.diagnostics().bodies[1].velocity;
+  EXPECT_NEAR(v[2], -1e5 * solver.time(), 1e-9 * 1e5 * solver.time());
+  // The bodies' momentum equals the start's plus the external impulse on both bodies.
+  EXPECT_NEAR(solver.external_impulse()[2],
+              -1e5 * solver.time() * (mass + solver.diagnostics().bodies[0].mass),
+              1e-9 * 1e5 * solver.time() * mass);
+}
