@@ -140,7 +140,7 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
     bullet["rigid"] = solver.body_material(projectile).is_rigid();
     const mpm::RigidHold& hold = solver.projectile_hold();
     const mpm::RigidHoldRecord& held = hold.record();
-    if (held.applies || !held.reason.empty())
+    if (held.considered())
       bullet["rigid_hold"] = {
         {"held_now", held.held},
         {"held_from_start", held.held || held.release_step >= 0},

@@ -355,7 +355,7 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
       const bool owned = !s.owns_node || s.owns_node(keys[node]);
       Vector3* force = owned ? force_local.data() : force_elsewhere.data();
       const std::size_t rigid = rigid_present[0];
-      const Vector3 rigid_force_before = force[rigid];
+      const Vector3 rigid_force_before = n_rigid == 1 ? force[rigid] : Vector3::Zero();
       const double removed =
         resolve_contact(s, data, nodal_stress(s, fields, node), v_new, n_bodies, force);
       if (n_rigid == 1)

@@ -63,7 +63,6 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
     const Tensor2 volume_stress =
         (particles.reference_volume[p] * particles.deformation_gradient[p].determinant()) *
         full_tensor(particles.stress[p]);
-    const Vector3 external = point_force ? point_force[p] : Vector3::Zero();
     auto add = [&](const std::int64_t key, const double w, const Vector3& grad_w,
                    const Vector3& momentum)
     {
@@ -71,7 +70,10 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
       const double wm = w * m;
       node.mass += wm;
       node.momentum += w * momentum;
-      node.force += w * external - volume_stress * grad_w;
+      if (point_force)
+        node.force += w * point_force[p] - volume_stress * grad_w;
+      else
+        node.force -= volume_stress * grad_w;
       if constexpr (with_normals)
       {
         node.mass_gradient += m * grad_w;

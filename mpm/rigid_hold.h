@@ -45,6 +45,8 @@ struct RigidHoldRecord
   long release_step = -1;        ///< step at whose end it turned deformable, or -1
   double release_time = 0.0;
   std::string reason;            ///< why it is not held (from the start, or since release)
+  /// The scene asked for the hold and the projectile was held, or declined with a reason.
+  bool considered() const { return applies || !reason.empty(); }
 };
 
 class RigidHold

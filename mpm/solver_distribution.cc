@@ -221,7 +221,9 @@ void Solver::reduce_contact_result()
   }
   grid_result.contact_dissipation = sums[6 * n_bodies];
   grid_result.n_contact_nodes = static_cast<std::size_t>(sums[6 * n_bodies + 1]);
-  ranks.max(grid_result.peak_node_force.data(), static_cast<int>(n_bodies));
+  if (std::find(grid_settings.body_is_rigid.begin(), grid_settings.body_is_rigid.end(), 1) !=
+      grid_settings.body_is_rigid.end())
+    ranks.max(grid_result.peak_node_force.data(), static_cast<int>(n_bodies));
 }
 
 SceneDiagnostics Solver::diagnostics() const

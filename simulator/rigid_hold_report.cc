@@ -6,22 +6,12 @@
 
 namespace vulnus::simulator
 {
-namespace
-{
-bool hold_asked(const mpm::Solver& solver)
-{
-  const int b = solver.projectile();
-  return b >= 0 && solver.scene().rigid_projectile_while_elastic &&
-         !solver.body_material(b).is_rigid() && solver.uses_contact();
-}
-} // namespace
-
 std::string rigid_hold_scene_line(const mpm::Solver& solver)
 {
-  if (!hold_asked(solver))
-    return {};
   const mpm::RigidHold& hold = solver.projectile_hold();
   const mpm::RigidHoldRecord& r = hold.record();
+  if (!r.considered())
+    return {};
   const std::string name = solver.scene().bodies[solver.projectile()].name;
   std::ostringstream o;
   o << std::setprecision(3) << "  projectile " << name;
@@ -55,8 +45,6 @@ std::string rigid_hold_release_event(const mpm::Solver& solver, bool& reported)
 
 std::string rigid_hold_final_note(const mpm::Solver& solver)
 {
-  if (!hold_asked(solver))
-    return {};
   const mpm::RigidHold& hold = solver.projectile_hold();
   const mpm::RigidHoldRecord& r = hold.record();
   if (!r.held && r.release_step < 0)
