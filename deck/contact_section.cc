@@ -21,6 +21,14 @@ void declare_contact_section(EntryTable& table)
                 "check off (contact wherever both bodies reach a node and approach, up to a "
                 "cell before their surfaces meet). Touching half-spaces under linear weights "
                 "sit 2/3 of a cell apart.");
+  table.declare("Rigid surface", "points", Patterns::Selection("points|exact"),
+                "Where contact takes a rigid body's surface (a rigid material, or a projectile "
+                "held rigid while elastic): points (its mass centre seen from each node, with "
+                "the proximity distance above) or exact (its deck shape, sphere, box or "
+                "cylinder, moved with it: a node engages where the other body's mass centre, "
+                "less half that body's point spacing, reaches the shape after the step's "
+                "approach, and the shape gives the normal; a rigid material's body then also weighs its "
+                "shape's volume times its density, shared by its points; docs/validation.md).");
   table.declare("Criterion", "approach", Patterns::Selection("approach|approach or compression"),
                 "Where bodies interact at a shared node: approach (only where they approach "
                 "each other), or approach or compression (also where a body's surface is in "
@@ -41,6 +49,7 @@ void parse_contact_section(dealii::ParameterHandler& prm, mpm::ContactParameters
   contact.enabled = prm.get_bool("Enabled");
   contact.friction_coefficient = prm.get_double("Friction coefficient");
   contact.proximity_distance = prm.get_double("Proximity distance");
+  contact.exact_rigid_surface = prm.get("Rigid surface") == "exact";
   contact.hold_compressed_surfaces = prm.get("Criterion") == "approach or compression";
   contact.two_passes = prm.get("Passes") == "two";
   prm.leave_subsection();

@@ -38,6 +38,25 @@ bool body_contains(const BodyParameters& body, const Vector3& x)
   return false;
 }
 
+double body_volume(const BodyParameters& body)
+{
+  switch (body.shape)
+  {
+    case BodyShape::box:
+      return (body.box_max - body.box_min).prod();
+    case BodyShape::sphere:
+      return 4.0 / 3.0 * M_PI * std::pow(body.radius, 3);
+    case BodyShape::cylinder:
+    {
+      const double r2 = body.radius * body.radius;
+      if (body.nose == NoseShape::flat)
+        return M_PI * r2 * body.length;
+      return M_PI * r2 * (body.length - body.radius) + 2.0 / 3.0 * M_PI * r2 * body.radius;
+    }
+  }
+  return 0.0;
+}
+
 void body_bounding_box(const BodyParameters& body, Vector3& lower, Vector3& upper)
 {
   switch (body.shape)

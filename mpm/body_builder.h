@@ -13,6 +13,9 @@ namespace vulnus::mpm
 /// True when x lies inside the body's shape.
 bool body_contains(const BodyParameters& body, const Vector3& x);
 
+/// Volume of the body's shape, m^3 (its points' volumes sum to it only up to the sampling).
+double body_volume(const BodyParameters& body);
+
 /// Axis-aligned bounding box of the body's shape.
 void body_bounding_box(const BodyParameters& body, Vector3& lower, Vector3& upper);
 

@@ -2,6 +2,7 @@
 #include "mpm/grid_update.h"
 
 #include "mpm/particles.h"
+#include "mpm/shape_distance.h"
 
 #include <omp.h>
 
@@ -79,6 +80,25 @@ double gap_after_step(const NodeBodyData& first, const NodeBodyData& second,
   return separation.dot(normal) - dt * closing;
 }
 
+/// Share of the contact correction applied at a node where a body meets rigid body `rigid`,
+/// whose exact surface is known: from the gap between that surface and the other body's mass
+/// centre there, less half its point spacing, after the step's approach; `normal` becomes the
+/// surface's outward normal. Negative when the surface gives no normal there.
+double exact_surface_engagement(const GridUpdateSettings& s, const NodeBodyData* data,
+                                const Vector3* v, const std::size_t rigid,
+                                const std::size_t other, Vector3& normal)
+{
+  const Vector3 x_other = data[other].mass_position / data[other].mass;
+  const ShapeDistance surface =
+    distance_to_shape(*s.exact_surface[rigid], s.rigid_offset[rigid], x_other);
+  if (!(surface.normal.squaredNorm() > 0.0))
+    return -1.0;
+  normal = surface.normal;
+  const double closing = (v[rigid] - v[other]).dot(normal);
+  const double gap = surface.distance - s.point_half_spacing[other] - s.time_step * closing;
+  return std::clamp((s.contact_band - gap) / (2.0 * s.contact_band), 0.0, 1.0);
+}
+
 /// Corrects the velocities of the bodies meeting at one node. `v` holds the trial
 /// velocities of the n_bodies entries; returns the kinetic energy removed.
 double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data,
@@ -138,8 +158,23 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data,
   const double dt = s.time_step;
   // Share of the contact correction applied: 1 for bodies in contact, 0 for bodies apart.
   double engagement = 1.0;
-  if (pair && s.contact_distance > 0.0 && s.friction_coefficient >= 0.0 &&
-      pair_normal.squaredNorm() > 0.0)
+  const bool exact = pair && rigid >= 0 && !leader && s.friction_coefficient >= 0.0 &&
+                     !s.exact_surface.empty() && s.exact_surface[rigid];
+  Vector3 surface_normal = Vector3::Zero();
+  const double surface_engagement =
+    exact ? exact_surface_engagement(s, data, v, rigid,
+                                     present[0] == std::size_t(rigid) ? present[1] : present[0],
+                                     surface_normal)
+          : -1.0;
+  if (surface_engagement >= 0.0)
+  {
+    pair_normal = present[0] == std::size_t(rigid) ? surface_normal : Vector3(-surface_normal);
+    engagement = surface_engagement;
+    if (engagement == 0.0)
+      return 0.0;
+  }
+  else if (pair && s.contact_distance > 0.0 && s.friction_coefficient >= 0.0 &&
+           pair_normal.squaredNorm() > 0.0)
   {
     // The correction fades in linearly over a band around the contact distance, so that
     // round-off in the separation changes the result by round-off, not by a whole impulse.

@@ -38,6 +38,14 @@ struct GridUpdateSettings
   double contact_distance = 0.0;
   /// Half-width (m) of the band around contact_distance over which the correction fades in.
   double contact_band = 0.0;
+  /// Per body: its exact shape when contact measures the gap from a rigid body's surface
+  /// (Contact/Rigid surface = exact; used while the body is rigid), else null. A node then
+  /// engages when the other body's mass centre there, less half its point spacing, reaches
+  /// that surface after the step's approach; the surface gives the normal. Without it the gap
+  /// is between the two bodies' mass centres (contact_distance).
+  std::vector<const BodyParameters*> exact_surface;
+  std::vector<Vector3> rigid_offset;       ///< per body: how far its exact shape has moved, m
+  std::vector<double> point_half_spacing;  ///< per body: half its point spacing, m
   /// Contact also where a body's surface is in compression, n . S n < 0 with S its nodal
   /// stress sum (GridFields::stress_sum), even while the bodies separate (Uintah's criterion).
   bool hold_compressed_surfaces = false;

@@ -68,6 +68,11 @@ struct ContactParameters
   /// Proximity check, in cell sizes (0: off): bodies interact at a node only when their mass
   /// centres there are at most this far apart along the normal after the step's approach.
   double proximity_distance = 0.8;
+  /// A rigid body's gap (and normal) from its exact shape moved with it, to the other body's
+  /// mass centre at the node less half that body's point spacing, instead of the mass
+  /// centres both bodies' points give the node (proximity_distance then applies to
+  /// deformable pairs only).
+  bool exact_rigid_surface = false;
   /// Uintah's friction_bard criterion: bodies also interact at a node where a body's surface
   /// is in compression (n . sigma n < 0 of its nodal stress sum), even while they separate.
   bool hold_compressed_surfaces = false;

@@ -135,6 +135,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   stress_settings.time_step = 0.0;
   update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
   begin_rigid_hold();
+  plan_exact_rigid_surfaces();
   plan_projectile_subcycle();
   sort_points();
   const SceneDiagnostics d = diagnostics();
@@ -352,6 +353,7 @@ void Solver::advance(const double cap)
   lap(timings.particle_to_grid);
 
   grid_settings.time_step = dt;
+  update_rigid_surfaces();
   update_grid(grid, grid_settings, fields, grid_result);
   lap(timings.grid_update);
   if (subcycle)

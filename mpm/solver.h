@@ -227,6 +227,12 @@ private:
   /// Holds the deformable projectile rigid when the scene asks and the impact allows it
   /// (mpm/rigid_hold.h). Collective.
   void begin_rigid_hold();
+  /// Per body, the exact shape contact takes for it while it is rigid (Contact/Rigid surface
+  /// = exact), and half its point spacing; a rigid material's body gets its shape's mass.
+  void plan_exact_rigid_surfaces();
+  /// Moves the exact shapes of the rigid bodies to where their points are (their mean
+  /// displacement from the start). Collective.
+  void update_rigid_surfaces();
   /// After this step's contact: the hold's checks. Returns whether they released it.
   bool check_rigid_hold(double dt, const Vector3& velocity_over_step);
   /// Makes the released projectile deformable (subcycled when the scene asks) from the next
