@@ -243,6 +243,39 @@ TEST(DistributedMpm, AHeldProjectileIsHeldAndReleasedAsOnOneProcess)
   }
 }
 
+// The copper ball, held rigid or of a rigid material, with its exact sphere as contact
+// surface: its place is its points' mean displacement summed over the ranks (a rank that
+// holds none of its points still meets it at the nodes it shares), a rigid material's mass
+// its sphere's on every rank, and it moves as on one process (contact round-off bounded as
+// above).
+TEST(DistributedMpm, AnExactRigidSurfaceFollowsTheBodyAcrossRanks)
+{
+  for (const bool rigid_material : {false, true})
+  {
+    test::BallSettings settings;
+    settings.cfl = 0.1;
+    settings.hold = !rigid_material;
+    settings.rigid = rigid_material;
+    mpm::SceneParameters scene = test::copper_ball_scene(settings);
+    scene.contact.exact_rigid_surface = true;
+    mpm::Solver serial(scene);
+    mpm::Solver distributed(scene, MPI_COMM_WORLD);
+    for (int i = 0; i < 30; ++i)
+    {
+      serial.advance();
+      distributed.advance();
+    }
+    EXPECT_EQ(distributed.projectile_hold().record().held, !rigid_material);
+    const mpm::SceneDiagnostics one = serial.diagnostics(), many = distributed.diagnostics();
+    EXPECT_NEAR(many.bodies[1].mass, one.bodies[1].mass, 1e-14 * one.bodies[1].mass);
+    const double v0 = scene.bodies[1].initial_velocity[1];
+    EXPECT_LT(one.bodies[1].velocity[1], v0 - 1e-3 * v0) << rigid_material; // it met the gel
+    EXPECT_NEAR(many.bodies[1].velocity[1], one.bodies[1].velocity[1],
+                1e-3 * one.bodies[1].velocity[1]) << rigid_material;
+    EXPECT_EQ(distributed.contact_nodes(), serial.contact_nodes()) << rigid_material;
+  }
+}
+
 TEST(DistributedMpm, CheckpointRestartsOnTheSameRanks)
 {
   const mpm::SceneParameters scene = crossing_spheres(true);
