@@ -17,7 +17,7 @@ void Solver::plan_exact_rigid_surfaces()
   for (std::size_t b = 0; b < n_bodies; ++b)
   {
     const BodyParameters& body = parameters.bodies[b];
-    grid_settings.point_half_spacing[b] = 0.5 * parameters.cell_size / body.particles_per_cell;
+    grid_settings.point_half_spacing[b] = transfer.half_size_cells[b] * parameters.cell_size;
     const bool may_be_rigid = grid_settings.body_is_rigid[b] ||
                               (parameters.rigid_projectile_while_elastic &&
                                static_cast<int>(b) == projectile_body);
