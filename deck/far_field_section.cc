@@ -51,6 +51,10 @@ void declare_far_field_section(EntryTable& table)
                 "Implicit: relative tolerance of the Krylov solver.");
   table.declare("Maximum linear iterations", "2000", Patterns::Integer(1, 1000000),
                 "Implicit: Krylov iterations before the solve is declared failed.");
+  table.declare("Reuse preconditioner", "true", Patterns::Bool(),
+                "Implicit: keep the multigrid hierarchy between Newton solves while the step "
+                "length holds and the Krylov iterations stay below twice (+10) those after "
+                "its set-up; false rebuilds it for every solve.");
   table.declare("Load face", "none", Patterns::Selection("none|x-|x+|y-|y+|z-|z+"),
                 "Pure-FE scenes: a slab face carrying a prescribed velocity or traction.");
   table.declare("Load kind", "velocity", Patterns::Selection("velocity|traction"),
@@ -88,6 +92,7 @@ void parse_far_field_section(dealii::ParameterHandler& prm, RunParameters& param
   f.linear_solver =
     prm.get("Linear solver") == "gmres" ? fem::LinearSolverType::gmres : fem::LinearSolverType::cg;
   f.linear_relative_tolerance = prm.get_double("Linear tolerance");
+  f.reuse_preconditioner = prm.get_bool("Reuse preconditioner");
   f.max_linear_iterations =
     static_cast<unsigned int>(prm.get_integer("Maximum linear iterations"));
   const std::string face = prm.get("Load face");

@@ -38,8 +38,9 @@ void CellStiffness::evaluate(const dealii::FEValues<3>& fe_values,
     j_bar = volume_averaged_gradients(int(n_q), F.data(), JxW.data(), F_law.data());
   else
     F_law = F;
-  std::vector<materials::Tangent> tangents(n_q);
-  std::vector<Eigen::Matrix3d> sigma(n_q), P_law(n_q);
+  tangents.resize(n_q);
+  sigma.resize(n_q);
+  P_law.resize(n_q);
   for (unsigned int q = 0; q < n_q; ++q)
   {
     law.update(F_law[q], fibers[q], states[q], responses[q], time_step);

@@ -24,6 +24,10 @@ struct CellStiffness
   std::vector<Eigen::Vector3d> grads; ///< [q * n_dofs + i], reference gradients
   Eigen::MatrixXd stiffness;          ///< d f_int / d u, n_dofs x n_dofs
 
+  /// Work arrays, kept so that a cell loop allocates them once.
+  std::vector<materials::Tangent> tangents;
+  std::vector<Eigen::Matrix3d> sigma, P_law;
+
   /// Evaluates the cell of fe_values (reinit'ed) at the displacements u_local of its dofs:
   /// states (n_q of them, starting from their committed values) are updated in place.
   /// Throws std::runtime_error where the law refuses a point (inverted, non-finite).

@@ -240,6 +240,10 @@ double integrator_gamma(const FeSceneParameters& prm);
 double implicit_beta(const FeSceneParameters& prm);
 double implicit_alpha_m(const FeSceneParameters& prm);
 double implicit_alpha_f(const FeSceneParameters& prm);
+/// The implicit step builds its multigrid hierarchy afresh at its next solve. Called where a
+/// checkpoint is written, so that a run restarted there and the run that goes on solve with
+/// the same hierarchies (bit for bit the same steps).
+void forget_implicit_preconditioner(FarFieldSolver::Data& d);
 
 /// The failure proximity of one point (FeSceneParameters::track_failure_proximity): the larger
 /// of the matrix shear's upper bound over its limit and, with a fiber, (fiber stretch - 1) /

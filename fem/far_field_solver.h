@@ -83,6 +83,10 @@ struct ImplicitStepStatistics
   unsigned int newton_iterations = 0;
   unsigned int linear_iterations = 0; ///< summed over Newton iterations
   double final_residual = 0.0;        ///< N
+  unsigned int preconditioner_setups = 0;
+  double assembly_seconds = 0.0;       ///< Newton systems: cells' laws, tangents, assembly
+  double preconditioner_seconds = 0.0; ///< multigrid set-ups
+  double solve_seconds = 0.0;          ///< Krylov iterations
 };
 
 /// Finite element far field of the slab (docs/DESIGN.md section 5).

@@ -51,6 +51,7 @@ void get_tensors(std::istream& in, std::vector<Tensor<1, 3>>& tensors, const std
 void FarFieldSolver::save(std::ostream& out) const
 {
   const Data& d = *data;
+  forget_implicit_preconditioner(*data);
   out.write(tag, sizeof(tag));
   binary::put(out, static_cast<std::uint64_t>(d.owned_dofs.n_elements()));
   for (const Data::Vector* v : {&d.displacement, &d.velocity, &d.acceleration,

@@ -141,6 +141,10 @@ struct FeSceneParameters
   LinearSolverType linear_solver = LinearSolverType::cg;
   double linear_relative_tolerance = 1.0e-10;
   unsigned int max_linear_iterations = 2000;
+  /// Keep the algebraic multigrid hierarchy from one Newton solve to the next (within a
+  /// step and across steps) while the step length holds and the Krylov iterations stay below
+  /// twice, plus 10, those of the first solve after it was built; false: rebuild every solve.
+  bool reuse_preconditioner = true;
 
   /// Paper default: the four side faces (normals x and z) fixed, entrance and exit free.
   std::array<FaceParameters, n_slab_faces> faces{{{FaceParameters::Condition::fixed, {}, {}},

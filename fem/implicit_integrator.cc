@@ -5,6 +5,7 @@
 //   tangent   -dr/du = (1 - af) K_t + (1 - am) / (beta dt^2) M
 #include "fem/cell_stiffness.h"
 #include "fem/far_field_data.h"
+#include "fem/ordered_cell_loop.h"
 #include "fem/tensor_conversion.h"
 
 #include <deal.II/base/mpi.h>
@@ -19,7 +20,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
+#include <memory>
 #include <cmath>
 #include <sstream>
 
@@ -31,6 +34,12 @@ struct ImplicitData
 {
   TrilinosWrappers::SparseMatrix matrix;
   TrilinosWrappers::PreconditionAMG preconditioner;
+  /// The hierarchy's step length (0: none built) and the Krylov iterations of the first
+  /// solve after it was built.
+  double preconditioner_dt = 0.0;
+  unsigned int iterations_after_setup = 0;
+  unsigned int last_iterations = 0;
+  bool first_solve_after_setup = false;
   std::vector<std::vector<bool>> constant_modes;
   TrilinosWrappers::MPI::Vector rhs, increment, external_condensed;
   TrilinosWrappers::MPI::Vector u_old, v_old, a_old;
@@ -65,6 +74,12 @@ double implicit_beta(const FeSceneParameters& prm) { return coefficients(prm).be
 double implicit_alpha_m(const FeSceneParameters& prm) { return coefficients(prm).alpha_m; }
 double implicit_alpha_f(const FeSceneParameters& prm) { return coefficients(prm).alpha_f; }
 
+void forget_implicit_preconditioner(FarFieldSolver::Data& d)
+{
+  if (d.implicit)
+    d.implicit->preconditioner_dt = 0.0;
+}
+
 namespace
 {
 void initialize_implicit(FarFieldSolver::Data& d)
@@ -84,24 +99,135 @@ void initialize_implicit(FarFieldSolver::Data& d)
   im.a_alpha.reinit(d.owned_dofs, d.relevant_dofs, d.comm);
 }
 
+/// One live cell's share of the Newton system, computed on a thread and added in cell order.
+struct NewtonCell
+{
+  std::vector<types::global_dof_index> dofs;
+  FullMatrix<double> matrix;
+  dealii::Vector<double> rhs;
+  std::vector<double> internal_force, inertia;
+  double strain_energy = 0.0, dissipated = 0.0;
+};
+
+/// A thread's tools for one chunk of cells.
+struct NewtonCellWorker
+{
+  NewtonCellWorker(const FarFieldSolver::Data& d)
+    : fe_values(d.mapping, d.fe, d.quadrature,
+                update_values | update_gradients | update_JxW_values),
+      values(d.fe.n_dofs_per_cell()), u_local(d.fe.n_dofs_per_cell()),
+      a_local(d.fe.n_dofs_per_cell())
+  {
+  }
+  FEValues<3> fe_values;
+  CellStiffness law;
+  std::vector<double> values, u_local, a_local;
+};
+
+/// Cell c's matrix (mass_factor M + stiffness_factor K_t), right-hand side -(f_int + M a),
+/// forces and energies at u_alpha, a_alpha; its trial states, stress, failure and wave speed.
+/// Throws std::runtime_error where the law refuses a point.
+void compute_newton_cell(FarFieldSolver::Data& d, const std::vector<unsigned int>& component,
+                         const double mass_factor, const double stiffness_factor,
+                         const materials::FailureParameters* criterion, NewtonCellWorker& w,
+                         const long c, NewtonCell& out)
+{
+  ImplicitData& im = *d.implicit;
+  const unsigned int n_dofs = d.fe.n_dofs_per_cell();
+  const auto& cell = d.live_cells[static_cast<std::size_t>(c)];
+  const unsigned int k = cell->active_cell_index();
+  const std::size_t first = std::size_t(k) * d.n_q_points;
+  w.fe_values.reinit(cell);
+  out.dofs.resize(n_dofs);
+  cell->get_dof_indices(out.dofs);
+  const double* u_values = im.u_alpha.trilinos_vector()[0];
+  const double* a_values = im.a_alpha.trilinos_vector()[0];
+  const int* local = &d.cell_local_dofs[std::size_t(k) * n_dofs];
+  for (unsigned int i = 0; i < n_dofs; ++i)
+  {
+    w.u_local[i] = u_values[local[i]];
+    w.a_local[i] = a_values[local[i]];
+  }
+  out.matrix.reinit(n_dofs, n_dofs);
+  out.rhs.reinit(n_dofs);
+  out.internal_force.assign(n_dofs, 0.0);
+  out.inertia.assign(n_dofs, 0.0);
+  out.strain_energy = out.dissipated = 0.0;
+  Tensor<2, 3> stress_sum;
+  double volume = 0.0, c_max = 0.0, proximity = 0.0;
+  unsigned char flags = 0;
+  materials::PointState* states = &d.trial_states[first];
+  std::copy_n(&d.committed_states[first], d.n_q_points, states);
+  try
+  {
+    w.law.evaluate(w.fe_values, component, w.u_local, *d.material, &d.fiber_directions[first],
+                   states, d.prm.volume_averaging, d.material_time_step);
+  }
+  catch (const std::runtime_error& e)
+  {
+    throw std::runtime_error(std::string("FE implicit: ") + e.what());
+  }
+  const bool fibers = d.material->uses_fibers();
+  for (unsigned int q = 0; q < d.n_q_points; ++q)
+  {
+    Tensor<1, 3> a_q;
+    for (unsigned int i = 0; i < n_dofs; ++i)
+    {
+      w.values[i] = w.fe_values.shape_value_component(i, q, component[i]);
+      a_q[component[i]] += w.a_local[i] * w.values[i];
+    }
+    const materials::PointResponse& response = w.law.responses[q];
+    const double J = w.law.F_law[q].determinant();
+    const double JxW = w.law.JxW[q];
+    const double rho_JxW = d.prm.density * JxW;
+    for (unsigned int i = 0; i < n_dofs; ++i)
+    {
+      const unsigned int ci = component[i];
+      out.inertia[i] += rho_JxW * w.values[i] * a_q[ci];
+      out.rhs(i) -= rho_JxW * w.values[i] * a_q[ci];
+      for (unsigned int j = 0; j < n_dofs; ++j)
+        if (component[j] == ci)
+          out.matrix(i, j) += mass_factor * rho_JxW * w.values[i] * w.values[j];
+    }
+    out.strain_energy += response.energy_density * JxW;
+    out.dissipated += response.dissipated_density * JxW;
+    stress_sum += JxW * to_dealii(response.cauchy_stress);
+    volume += JxW;
+    c_max = std::max(c_max, std::sqrt(response.p_wave_modulus * J / d.prm.density));
+    flags |= states[q].failure;
+    if (criterion != nullptr)
+      proximity = std::max(proximity, failure_proximity(*criterion, w.law.F_law[q],
+                                                        fibers ? &d.fiber_directions[first + q]
+                                                               : nullptr));
+  }
+  for (unsigned int i = 0; i < n_dofs; ++i)
+  {
+    const double f_int = w.law.force(i, component[i]);
+    out.internal_force[i] += f_int;
+    out.rhs(i) -= f_int;
+    for (unsigned int j = 0; j < n_dofs; ++j)
+      out.matrix(i, j) += stiffness_factor * w.law.stiffness(i, j);
+  }
+  d.cell_stress[k] = stress_sum / volume;
+  d.cell_failure[k] = flags;
+  d.cell_wave_speed[k] = c_max;
+  if (criterion != nullptr)
+    d.cell_failure_proximity[k] =
+      flags != materials::intact ? std::numeric_limits<double>::infinity() : proximity;
+}
+
 /// Assembles the Newton system at u_alpha, a_alpha into im.matrix and im.rhs (increment
-/// constraints), f_int into internal_force_raw; updates trial states and cell data.
+/// constraints), f_int into internal_force_raw; updates trial states and cell data. The cells
+/// are evaluated on the OpenMP threads and added in cell order (the same system on any
+/// number of threads).
 EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass_factor,
                                       const double stiffness_factor)
 {
   ImplicitData& im = *d.implicit;
-  FEValues<3> fe_values(d.mapping, d.fe, d.quadrature,
-                        update_values | update_gradients | update_JxW_values);
-  const unsigned int n_dofs = d.fe.n_dofs_per_cell();
-  std::vector<types::global_dof_index> dofs(n_dofs);
+  if (d.cell_local_dofs.empty())
+    d.index_cell_dofs(im.u_alpha);
   const std::vector<unsigned int> component = dof_components(d.fe);
-  std::vector<double> values(n_dofs), u_local(n_dofs), a_local(n_dofs), f_values(n_dofs),
-      inertia_values(n_dofs);
-  FullMatrix<double> cell_matrix(n_dofs, n_dofs);
-  dealii::Vector<double> cell_rhs(n_dofs);
-  CellStiffness law;
   const materials::FailureParameters* criterion = d.proximity_criterion();
-  const bool fibers = d.material->uses_fibers();
   EvaluationSums sums;
   bool inverted = false;
   std::string message;
@@ -110,89 +236,27 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
   im.rhs = 0.0;
   d.internal_force_raw = 0.0;
   d.inertia_coupling_raw = 0.0;
-  for (const auto& cell : d.dof_handler.active_cell_iterators())
+  try
   {
-    if (!d.owns_live(cell))
-      continue;
-    fe_values.reinit(cell);
-    cell->get_dof_indices(dofs);
-    for (unsigned int i = 0; i < n_dofs; ++i)
-    {
-      u_local[i] = im.u_alpha(dofs[i]);
-      a_local[i] = im.a_alpha(dofs[i]);
-    }
-    const unsigned int k = cell->active_cell_index();
-    const std::size_t first = std::size_t(k) * d.n_q_points;
-    cell_matrix = 0.0;
-    cell_rhs = 0.0;
-    std::fill(f_values.begin(), f_values.end(), 0.0);
-    std::fill(inertia_values.begin(), inertia_values.end(), 0.0);
-    Tensor<2, 3> stress_sum;
-    double volume = 0.0, c_max = 0.0, proximity = 0.0;
-    unsigned char flags = 0;
-    materials::PointState* states = &d.trial_states[first];
-    std::copy_n(&d.committed_states[first], d.n_q_points, states);
-    try
-    {
-      law.evaluate(fe_values, component, u_local, *d.material, &d.fiber_directions[first], states,
-                   d.prm.volume_averaging, d.material_time_step);
-    }
-    catch (const std::runtime_error& e)
-    {
-      inverted = true;
-      message = std::string("FE implicit: ") + e.what();
-      break;
-    }
-    for (unsigned int q = 0; q < d.n_q_points; ++q)
-    {
-      Tensor<1, 3> a_q;
-      for (unsigned int i = 0; i < n_dofs; ++i)
+    ordered_cell_loop<NewtonCell>(
+      static_cast<long>(d.live_cells.size()), 32,
+      [&]() { return std::make_unique<NewtonCellWorker>(d); },
+      [&](NewtonCellWorker& w, const long c, NewtonCell& out)
+      { compute_newton_cell(d, component, mass_factor, stiffness_factor, criterion, w, c, out); },
+      [&](long, NewtonCell& cell)
       {
-        values[i] = fe_values.shape_value_component(i, q, component[i]);
-        a_q[component[i]] += a_local[i] * values[i];
-      }
-      const materials::PointResponse& response = law.responses[q];
-      const double J = law.F_law[q].determinant();
-      const double JxW = law.JxW[q];
-      const double rho_JxW = d.prm.density * JxW;
-      for (unsigned int i = 0; i < n_dofs; ++i)
-      {
-        const unsigned int ci = component[i];
-        inertia_values[i] += rho_JxW * values[i] * a_q[ci];
-        cell_rhs(i) -= rho_JxW * values[i] * a_q[ci];
-        for (unsigned int j = 0; j < n_dofs; ++j)
-          if (component[j] == ci)
-            cell_matrix(i, j) += mass_factor * rho_JxW * values[i] * values[j];
-      }
-      sums.strain_energy += response.energy_density * JxW;
-      sums.dissipated += response.dissipated_density * JxW;
-      stress_sum += JxW * to_dealii(response.cauchy_stress);
-      volume += JxW;
-      c_max = std::max(c_max, std::sqrt(response.p_wave_modulus * J / d.prm.density));
-      flags |= states[q].failure;
-      if (criterion != nullptr)
-        proximity = std::max(proximity, failure_proximity(*criterion, law.F_law[q],
-                                                          fibers ? &d.fiber_directions[first + q]
-                                                                 : nullptr));
-    }
-    for (unsigned int i = 0; i < n_dofs; ++i)
-    {
-      const double f_int = law.force(i, component[i]);
-      f_values[i] += f_int;
-      cell_rhs(i) -= f_int;
-      for (unsigned int j = 0; j < n_dofs; ++j)
-        cell_matrix(i, j) += stiffness_factor * law.stiffness(i, j);
-    }
-    d.cell_stress[k] = stress_sum / volume;
-    d.cell_failure[k] = flags;
-    d.cell_wave_speed[k] = c_max;
-    if (criterion != nullptr)
-      d.cell_failure_proximity[k] =
-        flags != materials::intact ? std::numeric_limits<double>::infinity() : proximity;
-    d.internal_force_raw.add(dofs, f_values);
-    d.inertia_coupling_raw.add(dofs, inertia_values);
-    d.increment_constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, im.matrix,
-                                                       im.rhs);
+        sums.strain_energy += cell.strain_energy;
+        sums.dissipated += cell.dissipated;
+        d.internal_force_raw.add(cell.dofs, cell.internal_force);
+        d.inertia_coupling_raw.add(cell.dofs, cell.inertia);
+        d.increment_constraints.distribute_local_to_global(cell.matrix, cell.rhs, cell.dofs,
+                                                           im.matrix, im.rhs);
+      });
+  }
+  catch (const std::runtime_error& e)
+  {
+    inverted = true;
+    message = e.what();
   }
   for (const auto dof : d.dead_dofs)
     im.matrix.add(dof, dof, mass_factor * d.dead_dof_mass);
@@ -246,18 +310,40 @@ std::vector<double> predict_displacement(FarFieldSolver::Data& d, ImplicitData& 
   return a_dirichlet;
 }
 
+/// Whether the multigrid hierarchy must be rebuilt before the next solve: none yet, another
+/// step length, reuse off, or the last solve needed twice (+10) the iterations of the first
+/// solve after the set-up (the matrix has moved away from the one it was built for).
+bool preconditioner_outdated(const FarFieldSolver::Data& d, const ImplicitData& im,
+                             const double dt)
+{
+  if (!d.prm.reuse_preconditioner || im.preconditioner_dt == 0.0)
+    return true;
+  if (std::abs(dt - im.preconditioner_dt) > 1e-9 * dt)
+    return true;
+  return !im.first_solve_after_setup &&
+         im.last_iterations > 2 * im.iterations_after_setup + 10;
+}
+
 /// One Newton correction: AMG-preconditioned CG or GMRES on the condensed system, added to
 /// the displacement. Returns what failed ("" on success).
-std::string apply_newton_correction(FarFieldSolver::Data& d, ImplicitData& im,
+std::string apply_newton_correction(FarFieldSolver::Data& d, ImplicitData& im, const double dt,
                                     const double residual, ImplicitStepStatistics& stats)
 {
-  TrilinosWrappers::PreconditionAMG::AdditionalData amg;
-  amg.elliptic = true;
-  amg.higher_order_elements = d.prm.degree > 1;
-  amg.smoother_sweeps = 2;
-  amg.aggregation_threshold = 0.02;
-  amg.constant_modes = im.constant_modes;
-  im.preconditioner.initialize(im.matrix, amg);
+  const auto t0 = std::chrono::steady_clock::now();
+  if (preconditioner_outdated(d, im, dt))
+  {
+    TrilinosWrappers::PreconditionAMG::AdditionalData amg;
+    amg.elliptic = true;
+    amg.higher_order_elements = d.prm.degree > 1;
+    amg.smoother_sweeps = 2;
+    amg.aggregation_threshold = 0.02;
+    amg.constant_modes = im.constant_modes;
+    im.preconditioner.initialize(im.matrix, amg);
+    im.preconditioner_dt = dt;
+    im.first_solve_after_setup = true;
+    ++stats.preconditioner_setups;
+  }
+  const auto t1 = std::chrono::steady_clock::now();
   SolverControl control(d.prm.max_linear_iterations, d.prm.linear_relative_tolerance * residual);
   im.increment = 0.0;
   try
@@ -275,7 +361,17 @@ std::string apply_newton_correction(FarFieldSolver::Data& d, ImplicitData& im,
   }
   catch (const std::exception& e)
   {
+    im.preconditioner_dt = 0.0; // a fresh hierarchy for the retry
     return std::string("linear solver: ") + e.what();
+  }
+  const auto t2 = std::chrono::steady_clock::now();
+  stats.preconditioner_seconds += std::chrono::duration<double>(t1 - t0).count();
+  stats.solve_seconds += std::chrono::duration<double>(t2 - t1).count();
+  im.last_iterations = control.last_step();
+  if (im.first_solve_after_setup)
+  {
+    im.iterations_after_setup = im.last_iterations;
+    im.first_solve_after_setup = false;
   }
   stats.linear_iterations += control.last_step();
   d.increment_constraints.distribute(im.increment);
@@ -373,6 +469,7 @@ void FarFieldSolver::advance_implicit(const double dt)
     work = d.acceleration;
     work.sadd(1.0 - c.alpha_m, c.alpha_m, im.a_old);
     im.a_alpha = work;
+    const auto assembly_start = std::chrono::steady_clock::now();
     try
     {
       sums = assemble_newton_system(d, mass_factor, stiffness_factor);
@@ -382,6 +479,8 @@ void FarFieldSolver::advance_implicit(const double dt)
       failure = e.what();
       break;
     }
+    stats.assembly_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - assembly_start).count();
     im.rhs += im.external_condensed;
     const double residual = im.rhs.l2_norm();
     if (it == 0)
@@ -409,7 +508,7 @@ void FarFieldSolver::advance_implicit(const double dt)
     if (it == d.prm.max_newton_iterations)
       break;
 
-    failure = apply_newton_correction(d, im, residual, stats);
+    failure = apply_newton_correction(d, im, dt, residual, stats);
     if (!failure.empty())
       break;
     last_correction = im.increment.l2_norm();

@@ -4,6 +4,7 @@
 // coupling builds from it the window's effective interface mass (docs/far_field.md, section 1).
 #include "fem/far_field_data.h"
 #include "fem/cell_stiffness.h"
+#include "fem/ordered_cell_loop.h"
 #include "fem/tensor_conversion.h"
 
 #include <deal.II/dofs/dof_tools.h>
@@ -16,6 +17,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <stdexcept>
 
 namespace vulnus::fem
@@ -66,52 +68,76 @@ void FarFieldSolver::prepare_interface_stiffness(const double dt)
 
   const Data::Vector on_interface = interface_dof_flags(d);
   d.ghosted = d.displacement;
-  FEValues<3> fe_values(d.mapping, d.fe, d.quadrature,
-                        update_values | update_gradients | update_JxW_values);
+  if (d.cell_local_dofs.empty())
+    d.index_cell_dofs(d.ghosted);
   const unsigned int n_dofs = d.fe.n_dofs_per_cell();
-  std::vector<types::global_dof_index> dofs(n_dofs);
   const std::vector<unsigned int> component = dof_components(d.fe);
-  std::vector<double> values(n_dofs), u_local(n_dofs);
-  FullMatrix<double> cell_matrix(n_dofs, n_dofs);
-  CellStiffness law;
-  for (const auto& cell : d.dof_handler.active_cell_iterators())
+  const double* u_values = d.ghosted.trilinos_vector()[0];
+  const double* flags = on_interface.trilinos_vector()[0];
+  struct Worker
   {
-    if (!d.owns_live(cell))
-      continue;
-    fe_values.reinit(cell);
-    cell->get_dof_indices(dofs);
-    bool touches_interface = false;
-    for (unsigned int i = 0; i < n_dofs; ++i)
+    explicit Worker(const Data& d)
+      : fe_values(d.mapping, d.fe, d.quadrature,
+                  update_values | update_gradients | update_JxW_values),
+        values(d.fe.n_dofs_per_cell()), u_local(d.fe.n_dofs_per_cell()), states(d.n_q_points)
     {
-      u_local[i] = d.ghosted(dofs[i]);
-      touches_interface = touches_interface || on_interface(dofs[i]) != 0.0;
     }
-    const std::size_t first = std::size_t(cell->active_cell_index()) * d.n_q_points;
-    cell_matrix = 0.0;
-    std::vector<materials::PointState> states(&d.committed_states[first],
-                                              &d.committed_states[first] + d.n_q_points);
-    law.evaluate(fe_values, component, u_local, *d.material, &d.fiber_directions[first],
-                 states.data(), d.prm.volume_averaging, dt);
-    for (unsigned int q = 0; q < d.n_q_points; ++q)
+    FEValues<3> fe_values;
+    CellStiffness law;
+    std::vector<double> values, u_local;
+    std::vector<materials::PointState> states;
+  };
+  struct Cell
+  {
+    std::vector<types::global_dof_index> dofs;
+    FullMatrix<double> matrix;
+    bool touches_interface = false;
+  };
+  // The cells' matrices on the threads, added in cell order.
+  ordered_cell_loop<Cell>(
+    static_cast<long>(d.live_cells.size()), 32, [&]() { return std::make_unique<Worker>(d); },
+    [&](Worker& w, const long c, Cell& out)
     {
-      const double rho_JxW = d.prm.density * fe_values.JxW(q);
+      const auto& cell = d.live_cells[static_cast<std::size_t>(c)];
+      const std::size_t k = cell->active_cell_index();
+      w.fe_values.reinit(cell);
+      out.dofs.resize(n_dofs);
+      cell->get_dof_indices(out.dofs);
+      const int* local = &d.cell_local_dofs[k * n_dofs];
+      out.touches_interface = false;
       for (unsigned int i = 0; i < n_dofs; ++i)
-        values[i] = fe_values.shape_value_component(i, q, component[i]);
+      {
+        w.u_local[i] = u_values[local[i]];
+        out.touches_interface = out.touches_interface || flags[local[i]] != 0.0;
+      }
+      const std::size_t first = k * d.n_q_points;
+      std::copy_n(&d.committed_states[first], d.n_q_points, w.states.begin());
+      w.law.evaluate(w.fe_values, component, w.u_local, *d.material, &d.fiber_directions[first],
+                     w.states.data(), d.prm.volume_averaging, dt);
+      out.matrix.reinit(n_dofs, n_dofs);
+      for (unsigned int q = 0; q < d.n_q_points; ++q)
+      {
+        const double rho_JxW = d.prm.density * w.fe_values.JxW(q);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          w.values[i] = w.fe_values.shape_value_component(i, q, component[i]);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            if (component[i] == component[j])
+              out.matrix(i, j) += mass_factor * rho_JxW * w.values[i] * w.values[j];
+      }
       for (unsigned int i = 0; i < n_dofs; ++i)
         for (unsigned int j = 0; j < n_dofs; ++j)
-          if (component[i] == component[j])
-            cell_matrix(i, j) += mass_factor * rho_JxW * values[i] * values[j];
-    }
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      for (unsigned int j = 0; j < n_dofs; ++j)
-        cell_matrix(i, j) += stiffness_factor * law.stiffness(i, j);
-    if (touches_interface)
+          out.matrix(i, j) += stiffness_factor * w.law.stiffness(i, j);
+    },
+    [&](long, Cell& cell)
     {
-      s->cell_dofs.push_back(dofs);
-      s->cell_matrices.push_back(cell_matrix);
-    }
-    d.increment_constraints.distribute_local_to_global(cell_matrix, dofs, s->matrix);
-  }
+      if (cell.touches_interface)
+      {
+        s->cell_dofs.push_back(cell.dofs);
+        s->cell_matrices.push_back(cell.matrix);
+      }
+      d.increment_constraints.distribute_local_to_global(cell.matrix, cell.dofs, s->matrix);
+    });
   for (const auto dof : d.dead_dofs)
     s->matrix.add(dof, dof, mass_factor * d.dead_dof_mass);
   s->matrix.compress(VectorOperation::add);

@@ -8,6 +8,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <chrono>
+#include <omp.h>
 #include <cstdlib>
 #include <iostream>
 
@@ -36,10 +37,18 @@ int main(int argc, char** argv)
   p.interface_condition = InterfaceCondition::velocity_driven;
   p.fibers.kind = vulnus::materials::FiberFieldParameters::Kind::rotating;
 
-  for (const TimeIntegrator integrator :
-       {TimeIntegrator::central_difference, TimeIntegrator::newmark})
+  struct Case
   {
+    TimeIntegrator integrator;
+    bool reuse_preconditioner;
+  };
+  for (const Case run_case : {Case{TimeIntegrator::central_difference, true},
+                              Case{TimeIntegrator::newmark, false},
+                              Case{TimeIntegrator::newmark, true}})
+  {
+    const TimeIntegrator integrator = run_case.integrator;
     p.integrator = integrator;
+    p.reuse_preconditioner = run_case.reuse_preconditioner;
     p.time_step = 1e-5;
     const auto t0 = std::chrono::steady_clock::now();
     FarFieldSolver solver(p, MPI_COMM_WORLD);
@@ -52,19 +61,27 @@ int main(int argc, char** argv)
     const bool implicit = integrator != TimeIntegrator::central_difference;
     const unsigned int n_steps = implicit ? n_implicit : n_explicit;
     const auto t1 = std::chrono::steady_clock::now();
-    unsigned int newton = 0, linear = 0;
-    double dt = 0.0;
+    unsigned int newton = 0, linear = 0, setups = 0;
+    double dt = 0.0, assembly = 0.0, preconditioner = 0.0, krylov = 0.0;
     for (unsigned int s = 0; s < n_steps; ++s)
     {
       dt = solver.next_time_step();
       solver.advance(dt);
       newton += solver.last_implicit_step().newton_iterations;
       linear += solver.last_implicit_step().linear_iterations;
+      setups += solver.last_implicit_step().preconditioner_setups;
+      assembly += solver.last_implicit_step().assembly_seconds;
+      preconditioner += solver.last_implicit_step().preconditioner_seconds;
+      krylov += solver.last_implicit_step().solve_seconds;
     }
     const double run = seconds_since(t1);
     if (root)
     {
-      std::cout << (implicit ? "implicit Newmark" : "explicit central difference") << ": "
+      std::cout << (implicit ? (run_case.reuse_preconditioner
+                                  ? "implicit Newmark, multigrid reused"
+                                  : "implicit Newmark, multigrid rebuilt every solve")
+                             : "explicit central difference")
+                << ", " << omp_get_max_threads() << " thread(s): "
                 << solver.n_active_cells() << " cells, " << solver.n_dofs() << " dofs, "
                 << solver.n_quadrature_points() << " q-points, "
                 << dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << " rank(s)\n"
@@ -73,7 +90,9 @@ int main(int argc, char** argv)
       if (implicit)
         std::cout << "  Newton iterations/step " << double(newton) / n_steps
                   << ", linear iterations/Newton iteration "
-                  << double(linear) / std::max(newton, 1u) << "\n";
+                  << double(linear) / std::max(newton, 1u) << ", multigrid set-ups " << setups
+                << "\n  per step: assembly " << assembly / n_steps << " s, multigrid set-up "
+                << preconditioner / n_steps << " s, Krylov " << krylov / n_steps << " s\n";
       else
       {
         const FePhaseTimes& t = solver.explicit_phase_times();
