@@ -198,7 +198,8 @@ void HybridSolver::build_balance_matrix(const double window)
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void HybridSolver::factor_balance_matrix(const std::vector<double>& mpm_mass)
+void HybridSolver::factor_effective_mass(const std::vector<double>& diagonal,
+                                         Eigen::SparseLU<Eigen::SparseMatrix<double>>& solver) const
 {
   const std::vector<mpm::Vector3>& free = free_components;
   auto held = [&](const Eigen::Index i) { return free[i / 3][i % 3] == 0.0; };
@@ -209,14 +210,19 @@ void HybridSolver::factor_balance_matrix(const std::vector<double>& mpm_mass)
       if (!held(it.row()) && !held(it.col()))
         entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
   for (Eigen::Index i = 0; i < balance_matrix.rows(); ++i)
-    entries.emplace_back(static_cast<int>(i), static_cast<int>(i), held(i) ? 1.0 : mpm_mass[i / 3]);
+    entries.emplace_back(static_cast<int>(i), static_cast<int>(i), held(i) ? 1.0 : diagonal[i / 3]);
   Eigen::SparseMatrix<double> a(balance_matrix.rows(), balance_matrix.cols());
   a.setFromTriplets(entries.begin(), entries.end());
-  balance_solver.compute(a);
-  if (balance_solver.info() != Eigen::Success)
+  solver.compute(a);
+  if (solver.info() != Eigen::Success)
     throw std::runtime_error("balanced window: the interface's effective-mass matrix could not "
-                             "be factored (" + balance_solver.lastErrorMessage() +
+                             "be factored (" + solver.lastErrorMessage() +
                              "); use Far field/Integrator = central difference");
+}
+
+void HybridSolver::factor_balance_matrix(const std::vector<double>& mpm_mass)
+{
+  factor_effective_mass(mpm_mass, balance_solver);
   balance_mpm_mass = mpm_mass;
 }
 

@@ -55,6 +55,9 @@ void HybridSolver::save(std::ostream& out) const
   binary::put_vector(out, values);
   binary::put_vector(out, balance_mpm_mass);
   binary::put(out, impulse_left_by_retirement);
+  binary::put_vector(out, dashpot_free_velocity);
+  binary::put(out, dashpot_ratio);
+  binary::put_vector(out, dashpot_mass);
   out.write(tag, sizeof(tag));
   if (!out)
     throw std::runtime_error("hybrid checkpoint could not be written");
@@ -141,6 +144,14 @@ void HybridSolver::restore(std::istream& in)
   if (rows > 0 && masses.size() == keys.size())
     factor_balance_matrix(masses);
   binary::get(in, impulse_left_by_retirement);
+  binary::get_vector(in, dashpot_free_velocity);
+  binary::get(in, dashpot_ratio);
+  binary::get_vector(in, dashpot_mass);
+  if (dashpot_windows() && rows > 0 && dashpot_mass.size() == keys.size())
+  {
+    factor_effective_mass(std::vector<double>(keys.size(), 0.0), balance_free_solver);
+    factor_dashpot(dashpot_ratio, dashpot_mass);
+  }
   binary::expect_tag(in, tag, "hybrid checkpoint is incomplete (no trailer)");
 }
 } // namespace vulnus::coupling

@@ -13,6 +13,17 @@ enum class CouplingScheme
   multi_step ///< scheme 2: the FE side takes steps of several MPM substeps
 };
 
+/// How the MPM substeps of a window meet an implicit far field (docs/far_field.md, section 1).
+enum class WindowCoupling
+{
+  /// The substeps move the interface towards the end velocities that would balance the
+  /// window; the window is kept within one wave transit of the far field's smallest cell.
+  balanced,
+  /// The substeps see the far field as its mean free interface velocity over the window
+  /// plus a dashpot of its effective interface mass: stable for any window length.
+  dashpot
+};
+
 /// Where the MPM zone starts: the deck's box, or the bullet path's tube (radius plus one
 /// cell plus a margin) through the body, on grid nodes.
 enum class ZoneStart
@@ -54,6 +65,7 @@ struct HybridParameters
   /// multi_step: MPM substeps per FE step; 0 chooses the FE step from its own stability
   /// (explicit) or the deck step (implicit).
   unsigned int substeps = 0;
+  WindowCoupling window_coupling = WindowCoupling::balanced;
   ZoneStart zone_start = ZoneStart::box;
   /// around_path: the tissue kept around the projectile's radius plus one cell, m.
   double path_margin = 0.002;

@@ -158,7 +158,7 @@ void HybridSolver::advance()
       window = std::min(window, split.hybrid.substeps * mpm_solver->stable_time_step());
     // Balanced implicit windows stay within one wave transit of the far field's smallest
     // cell: beyond it the interface gains energy (docs/far_field.md, section 1).
-    if (balances_windows())
+    if (balances_windows() && !dashpot_windows())
       if (const double limit = fe_solver->shortest_wave_transit(); window > limit)
       {
         window = limit;
@@ -307,6 +307,11 @@ void HybridSolver::exchange(const double time, const double dt,
   const double window = window_end - window_start;
   const bool first_substep = time <= window_start + 1e-9 * window;
   const bool last_substep = time + dt >= window_end - 1e-9 * window;
+  if (dashpot_windows())
+  {
+    exchange_dashpot(dt, first_substep, last_substep, mpm_side, v_start, v_end);
+    return;
+  }
   if (balances_windows())
   {
     exchange_balanced(time, dt, first_substep, last_substep, mpm_side, v_start, v_end);

@@ -206,6 +206,23 @@ private:
   void exchange_balanced(double time, double dt, bool first_substep, bool last_substep,
                          const mpm::SharedNodeState& mpm_side,
                          std::vector<mpm::Vector3>& v_start, std::vector<mpm::Vector3>& v_end);
+  /// exchange() for dashpot windows (Window coupling = dashpot): at the window's start the far
+  /// field's free step gives its mean free interface velocity; every substep solves the shared
+  /// nodes' velocity against the MPM side's kick and a dashpot of the far field's effective
+  /// interface mass; the last substep steps the far field with the impulse the MPM side took.
+  void exchange_dashpot(double dt, bool first_substep, bool last_substep,
+                        const mpm::SharedNodeState& mpm_side, std::vector<mpm::Vector3>& v_start,
+                        std::vector<mpm::Vector3>& v_end);
+  /// Re-steps the far field from the window's start until its interface nodes receive
+  /// `target` (by key) beyond what its body transmits, with balance_free_solver's chord
+  /// iteration; returns whether it got there.
+  bool step_fe_to_impulse(double window, const std::vector<mpm::Vector3>& target);
+  /// dashpot_solver for substeps of window / dt = ratio with these MPM masses.
+  void factor_dashpot(double ratio, const std::vector<double>& mpm_mass);
+  bool dashpot_windows() const
+  {
+    return balances_windows() && split.hybrid.window_coupling == WindowCoupling::dashpot;
+  }
   /// Last substep of a balanced window: finds the interface end velocities for which the
   /// window creates no momentum, each guess evaluated by the far field's step from the
   /// window's start; the MPM side's last substep goes from v_start to them.
@@ -222,6 +239,10 @@ private:
   /// The balance's chord matrix for this window: balance_matrix plus the MPM nodal masses,
   /// identity rows for components a support holds.
   void factor_balance_matrix(const std::vector<double>& mpm_mass);
+  /// balance_matrix plus `diagonal` (3 per key: per node) factored into `solver`, identity rows
+  /// for components a support holds.
+  void factor_effective_mass(const std::vector<double>& diagonal,
+                             Eigen::SparseLU<Eigen::SparseMatrix<double>>& solver) const;
   /// Into g (3 per key): the momentum a balanced window creates at each shared node if its end
   /// velocity is velocity_end and this substep's MPM force holds for `remaining` seconds;
   /// returns its largest component, kg m/s.
@@ -263,6 +284,13 @@ private:
   Eigen::SparseMatrix<double> balance_matrix;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> balance_solver;
   std::vector<double> balance_mpm_mass; ///< the MPM masses balance_solver was factored with
+  // Dashpot windows: the far field's mean free interface velocity over the window, its
+  // effective interface mass alone factored, and with the MPM masses times window / dt.
+  std::vector<mpm::Vector3> dashpot_free_velocity;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> balance_free_solver;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> dashpot_solver;
+  double dashpot_ratio = 0.0;        ///< window / dt dashpot_solver was factored with
+  std::vector<double> dashpot_mass;  ///< and the MPM masses
   double balance_window_length = 0.0; ///< s
   std::size_t exact_balance_limit = 750;
   double balance_scale = 0.0; ///< largest (m_fe + m_mpm) |v| of an interface node so far, kg m/s

@@ -53,6 +53,12 @@ void declare_hybrid_section(EntryTable& table)
                 "step is then its own stable or deck step). An implicit far field's step is "
                 "also kept within one wave transit of its smallest cell, beyond which the "
                 "interface gains energy.");
+  table.declare("Window coupling", "balanced", Patterns::Selection("balanced|dashpot"),
+                "Multi step with an implicit far field: balanced (windows kept within one wave "
+                "transit of the far field's smallest cell) or dashpot (the substeps see the far "
+                "field's mean free interface velocity plus a dashpot of its effective interface "
+                "mass; stable for windows of any length, dissipating what the far field's step "
+                "cannot carry).");
   table.declare("Stop when FE points fail", "true", Patterns::Bool(),
                 "true: the run stops when a far-field quadrature point fails (the wound has "
                 "reached the FE region, whose answer is then not the MPM zone's); false: it "
@@ -82,6 +88,9 @@ void parse_hybrid_section(dealii::ParameterHandler& prm, coupling::HybridParamet
   hybrid.scheme = prm.get("Scheme") == "same step" ? coupling::CouplingScheme::same_step
                                                     : coupling::CouplingScheme::multi_step;
   hybrid.substeps = static_cast<unsigned int>(prm.get_integer("Substeps"));
+  hybrid.window_coupling = prm.get("Window coupling") == "dashpot"
+                             ? coupling::WindowCoupling::dashpot
+                             : coupling::WindowCoupling::balanced;
   hybrid.stop_when_fe_points_fail = prm.get_bool("Stop when FE points fail");
   prm.leave_subsection();
 }

@@ -36,6 +36,9 @@ struct WindowCase
   /// The substeps ask for windows beyond a wave's transit of the far field's smallest cell,
   /// which the solver shortens to one transit.
   bool shortened = false;
+  /// Hybrid/Window coupling = dashpot: windows of any length, the energy may only fall
+  /// (energy_bound then bounds its growth).
+  bool dashpot = false;
 };
 
 class HybridWindows : public ::testing::TestWithParam<WindowCase>
@@ -53,6 +56,8 @@ TEST_P(HybridWindows, ExchangeMomentumExactlyOnALoadedInterface)
   HybridParameters hybrid = zone({c0 - 0.002, c0 - 0.002, c0 - 0.002}, {c0 + 0.002, c0 + 0.002, c0 + 0.002},
                                  CouplingScheme::multi_step);
   hybrid.substeps = w.substeps;
+  if (w.dashpot)
+    hybrid.window_coupling = WindowCoupling::dashpot;
   fem::FeSceneParameters far = uniform_far_field(h);
   far.integrator = w.integrator;
   far.time_step = 1.0; // the window is set by the substeps
@@ -69,7 +74,7 @@ TEST_P(HybridWindows, ExchangeMomentumExactlyOnALoadedInterface)
   const Eigen::Vector3d p0 = solver.total_momentum();
   const double e0 = solver.mpm().diagnostics().kinetic_energy + solver.fe_mechanical_energy();
   const double p_scale = 1000.0 * std::pow(L, 3) * 0.3;
-  double worst = 0.0, worst_energy = 0.0, largest_transit = 0.0;
+  double worst = 0.0, worst_energy = 0.0, worst_growth = 0.0, largest_transit = 0.0, e = e0;
   while (solver.time() < w.end_time)
   {
     solver.advance();
@@ -77,13 +82,16 @@ TEST_P(HybridWindows, ExchangeMomentumExactlyOnALoadedInterface)
       worst = std::max(worst, (solver.total_momentum() - p0).norm());
     largest_transit = std::max(largest_transit, solver.impulse_in_transit().norm());
     const auto d = solver.mpm().diagnostics();
-    const double e = d.kinetic_energy + d.strain_energy + d.dissipated_energy + solver.fe_mechanical_energy();
+    e = d.kinetic_energy + d.strain_energy + d.dissipated_energy + solver.fe_mechanical_energy();
     worst_energy = std::max(worst_energy, std::abs(e - e0));
+    worst_growth = std::max(worst_growth, e - e0);
   }
   const InterfaceLedger& ledger = solver.ledger();
   std::cout << w.name << ": momentum drift / (m v_max) " << worst / p_scale
             << ", impulse in transit / (m v_max) " << largest_transit / p_scale
-            << ", energy change / E0 " << worst_energy / e0 << ", interface energy error / E0 "
+            << ", energy change / E0 " << worst_energy / e0 << " (largest growth "
+            << worst_growth / e0 << ", at the end " << (e - e0) / e0 << ")"
+            << ", interface energy error / E0 "
             << ledger.energy_error() / e0 << ", MPM steps " << ledger.mpm_steps << ", FE steps "
             << ledger.fe_steps << ", far-field re-steps " << ledger.balance_solves
             << ", effective-mass matrix " << ledger.balance_matrix_seconds << " s\n";
@@ -91,12 +99,15 @@ TEST_P(HybridWindows, ExchangeMomentumExactlyOnALoadedInterface)
   // The coupling's own books: what the interface gave both sides plus what is in transit.
   EXPECT_LT((ledger.mpm_impulse + ledger.fe_impulse + solver.impulse_in_transit()).norm(),
             w.momentum_bound * p_scale);
-  EXPECT_LT(worst_energy, w.energy_bound * e0);
+  if (w.dashpot)
+    EXPECT_LT(worst_growth, w.energy_bound * e0);
+  else
+    EXPECT_LT(worst_energy, w.energy_bound * e0);
   if (w.substeps > 0 && !w.shortened)
   {
     EXPECT_EQ(ledger.windows_shortened, 0u);
     EXPECT_GE(ledger.mpm_steps, (w.substeps - 1) * ledger.fe_steps);
-    EXPECT_LE(ledger.mpm_steps, (w.substeps + 1) * ledger.fe_steps);
+    EXPECT_LE(ledger.mpm_steps, (w.substeps + 1) * (ledger.fe_steps + 1)); // last one open
   }
   if (w.shortened)
   {
@@ -127,6 +138,11 @@ INSTANTIATE_TEST_SUITE_P(
     // Windows of 50 MPM steps of CFL 0.1 would last five transits (the energy then grew 20
     // times over 2 ms); the solver shortens them to one, with newmark_10's bounds.
     WindowCase{"newmark_50_shortened", fem::TimeIntegrator::newmark, 50, 0.1, 1e-3, 1e-10, 0.1,
+               true},
+    // Dashpot windows of 50 MPM steps of CFL 0.1 (5 transits), not shortened: momentum as
+    // exact as balanced windows', and the energy never above its start (the interface only
+    // dissipates: measured 17 % lost by 2 ms, the blow's content shorter than a window).
+    WindowCase{"dashpot_50", fem::TimeIntegrator::newmark, 50, 0.1, 2e-3, 1e-10, 0.01, false,
                true}),
 
   [](const ::testing::TestParamInfo<WindowCase>& info) { return info.param.name; });
