@@ -6,6 +6,7 @@
 
 #include <array>
 #include <chrono>
+#include <functional>
 #include <stdexcept>
 #include <unordered_map>
 #include <cmath>
@@ -226,6 +227,52 @@ void HybridSolver::factor_balance_matrix(const std::vector<double>& mpm_mass)
   balance_mpm_mass = mpm_mass;
 }
 
+double HybridSolver::window_balance_tolerance(const double window,
+                                              const std::vector<double>& mpm_mass)
+{
+  // Relative to the largest momentum the interface has carried (tiny waves ahead of a pulse
+  // need no finer balance), and no finer than the velocities the far field's Newton resolves
+  // (it stops at corrections of 1e-12 of a cell): 1e-10 of a cell per window.
+  double scale = 0.0, largest_mass = 0.0;
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    const double mass = fe_mass[k] + (mpm_mass.empty() ? 0.0 : mpm_mass[k]);
+    scale = std::max(scale, mass * std::max(velocity_end[k].norm(), velocity_start[k].norm()));
+    largest_mass = std::max(largest_mass, mass);
+  }
+  balance_scale = std::max(balance_scale, scale);
+  return std::max(balance_tolerance * balance_scale,
+                  1e-10 * largest_mass * split.fe.interface_cell_size / window);
+}
+
+bool HybridSolver::chord_iterate(const double window,
+                                 const Eigen::SparseLU<Eigen::SparseMatrix<double>>& solver,
+                                 const double tolerance,
+                                 const std::function<double(Eigen::VectorXd&)>& residual)
+{
+  const std::vector<mpm::Vector3>& free = free_components;
+  Eigen::VectorXd g;
+  double largest = residual(g);
+  unsigned int iteration = 0;
+  for (; largest > tolerance && iteration < max_balance_iterations; ++iteration)
+  {
+    const Eigen::VectorXd dv = solver.solve(g);
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      velocity_end[k] -= dv.segment<3>(3 * static_cast<Eigen::Index>(k)).cwiseProduct(free[k]);
+    std::istringstream state(fe_state_at_window_start);
+    fe_solver->restore(state);
+    fe_window_impulse = step_fe(window);
+    largest = residual(g);
+  }
+  book.balance_solves += iteration;
+  if (largest <= tolerance)
+    return true;
+  ++book.balance_unconverged_windows;
+  book.largest_balance_residual =
+      std::max(book.largest_balance_residual, largest / std::max(balance_scale, 1e-300));
+  return false;
+}
+
 void HybridSolver::balance_window(const double window, const double dt,
                                   const mpm::SharedNodeState& mpm_side,
                                   const std::vector<mpm::Vector3>& v_start)
@@ -234,40 +281,7 @@ void HybridSolver::balance_window(const double window, const double dt,
   // last substep's dt): the matrix is the MPM masses plus the far field's effective interface
   // mass over the window, each guess is evaluated by the far field's step from the window's
   // start.
-  const std::size_t n = keys.size();
-  const std::vector<mpm::Vector3>& free = free_components;
-  double scale = 0.0, largest_mass = 0.0;
-  for (std::size_t k = 0; k < n; ++k)
-  {
-    const double mass = fe_mass[k] + mpm_side.mass[k];
-    scale = std::max(scale, mass * std::max(velocity_end[k].norm(), velocity_start[k].norm()));
-    largest_mass = std::max(largest_mass, mass);
-  }
-  // Relative to the largest momentum the interface has carried (tiny waves ahead of a pulse
-  // need no finer balance), and no finer than the velocities the far field's Newton resolves
-  // (it stops at corrections of 1e-12 of a cell): 1e-10 of a cell per window.
-  balance_scale = std::max(balance_scale, scale);
-  const double tolerance =
-      std::max(balance_tolerance * balance_scale,
-               1e-10 * largest_mass * split.fe.interface_cell_size / window);
-  Eigen::VectorXd g;
-  double largest = creation_residual(mpm_side, v_start, dt, g);
-  unsigned int iteration = 0;
-  for (; largest > tolerance && iteration < max_balance_iterations; ++iteration)
-  {
-    const Eigen::VectorXd dv = balance_solver.solve(g);
-    for (std::size_t k = 0; k < n; ++k)
-      velocity_end[k] -= dv.segment<3>(3 * k).cwiseProduct(free[k]);
-    std::istringstream state(fe_state_at_window_start);
-    fe_solver->restore(state);
-    fe_window_impulse = step_fe(window);
-    largest = creation_residual(mpm_side, v_start, dt, g);
-  }
-  book.balance_solves += iteration;
-  if (largest > tolerance)
-  {
-    ++book.balance_unconverged_windows;
-    book.largest_balance_residual = std::max(book.largest_balance_residual, largest / balance_scale);
-  }
+  chord_iterate(window, balance_solver, window_balance_tolerance(window, mpm_side.mass),
+                [&](Eigen::VectorXd& g) { return creation_residual(mpm_side, v_start, dt, g); });
 }
 } // namespace vulnus::coupling

@@ -32,52 +32,21 @@ void HybridSolver::factor_dashpot(const double ratio, const std::vector<double>&
 
 bool HybridSolver::step_fe_to_impulse(const double window, const std::vector<mpm::Vector3>& target)
 {
-  const std::size_t n = keys.size();
   const std::vector<mpm::Vector3>& free = free_components;
-  double scale = 0.0, largest_mass = 0.0;
-  for (std::size_t k = 0; k < n; ++k)
-  {
-    const double mass = fe_mass[k];
-    scale = std::max(scale, mass * std::max(velocity_end[k].norm(), velocity_start[k].norm()));
-    largest_mass = std::max(largest_mass, mass);
-  }
-  balance_scale = std::max(balance_scale, scale);
-  const double tolerance =
-      std::max(balance_tolerance * balance_scale,
-               1e-10 * largest_mass * split.fe.interface_cell_size / window);
-  Eigen::VectorXd g(3 * n);
-  auto residual = [&]()
-  {
-    double largest = 0.0;
-    for (std::size_t k = 0; k < n; ++k)
-    {
-      const mpm::Vector3 gk = (fe_window_impulse[k] - target[k]).cwiseProduct(free[k]);
-      g.segment<3>(3 * static_cast<Eigen::Index>(k)) = gk;
-      largest = std::max(largest, gk.cwiseAbs().maxCoeff());
-    }
-    return largest;
-  };
-  double largest = residual();
-  unsigned int iteration = 0;
-  for (; largest > tolerance && iteration < max_balance_iterations; ++iteration)
-  {
-    const Eigen::VectorXd dv = balance_free_solver.solve(g);
-    for (std::size_t k = 0; k < n; ++k)
-      velocity_end[k] -= dv.segment<3>(3 * static_cast<Eigen::Index>(k)).cwiseProduct(free[k]);
-    std::istringstream state(fe_state_at_window_start);
-    fe_solver->restore(state);
-    fe_window_impulse = step_fe(window);
-    largest = residual();
-  }
-  book.balance_solves += iteration;
-  if (largest > tolerance)
-  {
-    ++book.balance_unconverged_windows;
-    book.largest_balance_residual =
-        std::max(book.largest_balance_residual, largest / std::max(balance_scale, 1e-300));
-    return false;
-  }
-  return true;
+  return chord_iterate(window, balance_free_solver, window_balance_tolerance(window, {}),
+                       [&](Eigen::VectorXd& g)
+                       {
+                         g.resize(3 * static_cast<Eigen::Index>(keys.size()));
+                         double largest = 0.0;
+                         for (std::size_t k = 0; k < keys.size(); ++k)
+                         {
+                           const mpm::Vector3 gk =
+                               (fe_window_impulse[k] - target[k]).cwiseProduct(free[k]);
+                           g.segment<3>(3 * static_cast<Eigen::Index>(k)) = gk;
+                           largest = std::max(largest, gk.cwiseAbs().maxCoeff());
+                         }
+                         return largest;
+                       });
 }
 
 void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
@@ -107,7 +76,10 @@ void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
     factor_dashpot(ratio, mpm_side.mass);
     if (interface_now.size() != n)
       interface_now = velocity_start;
-    // The free step: no impulse on the far field's interface nodes.
+    // The free step: no impulse on the far field's interface nodes, from the guess that its
+    // interface keeps its velocity (the summed-mass prediction over a long window may move
+    // it by many cells).
+    velocity_end = velocity_start;
     fe_window_impulse = step_fe(window);
     step_fe_to_impulse(window, std::vector<mpm::Vector3>(n, mpm::Vector3::Zero()));
     dashpot_free_velocity.resize(n);

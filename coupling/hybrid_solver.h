@@ -217,6 +217,14 @@ private:
   /// `target` (by key) beyond what its body transmits, with balance_free_solver's chord
   /// iteration; returns whether it got there.
   bool step_fe_to_impulse(double window, const std::vector<mpm::Vector3>& target);
+  /// The balance's tolerance for a window, kg m/s (balance_scale updated with the interface's
+  /// momentum, its masses the FE ones plus mpm_mass if given).
+  double window_balance_tolerance(double window, const std::vector<double>& mpm_mass);
+  /// Newton's chord iteration of a window: while residual(g) (its largest component) exceeds
+  /// the tolerance, velocity_end moves by -solver.solve(g) and the far field re-steps from the
+  /// window's start; books the re-steps and an unconverged window. Returns whether it got there.
+  bool chord_iterate(double window, const Eigen::SparseLU<Eigen::SparseMatrix<double>>& solver,
+                     double tolerance, const std::function<double(Eigen::VectorXd&)>& residual);
   /// dashpot_solver for substeps of window / dt = ratio with these MPM masses.
   void factor_dashpot(double ratio, const std::vector<double>& mpm_mass);
   bool dashpot_windows() const

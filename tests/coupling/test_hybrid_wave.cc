@@ -81,6 +81,11 @@ struct WaveCase
   bool shortened = false;
   /// Bound of the transmitted pulse's relative L2 difference to the pure-FE bar.
   double transmitted_bound = 0.12;
+  /// Hybrid/Window coupling = dashpot; energy_loss_bound bounds what the interface damps.
+  bool dashpot = false;
+  double energy_loss_bound = 0.0;
+  /// Reflection bound with a conversion mid-passage (0: reflection_bound).
+  double conversion_reflection_bound = 0.0;
 };
 
 /// The momentum the coupling created (zero to round-off: both sides' books plus what is in
@@ -113,6 +118,8 @@ WaveResult run_wave(const WaveCase& w, const bool convert)
   if (w.substeps > 0)
   {
     hybrid.substeps = w.substeps;
+    if (w.dashpot)
+      hybrid.window_coupling = WindowCoupling::dashpot;
     far.integrator = w.integrator;
     far.time_step = w.substeps * w.mpm_cfl * h / bar.c;
   }
@@ -206,13 +213,20 @@ TEST_P(HybridWave, CrossesTheInterfaceWithLittleReflection)
   const WaveCase w = GetParam();
   const WaveResult r = run_wave(w, false);
   EXPECT_LT(r.reflected_ratio, w.reflection_bound);
-  // Nothing created or lost on the way (MPM's own dissipation of the 20-cell pulse < 1 %).
-  EXPECT_NEAR(r.energy_ratio, 1.0, 0.01 + w.reflection_bound);
+  // Nothing created or lost on the way (MPM's own dissipation of the 20-cell pulse < 1 %);
+  // dashpot windows damp what varies within a window, and create nothing.
+  if (w.dashpot)
+  {
+    EXPECT_LT(r.energy_ratio, 1.0 + 0.01);
+    EXPECT_GT(r.energy_ratio, 1.0 - 0.01 - w.energy_loss_bound);
+  }
+  else
+    EXPECT_NEAR(r.energy_ratio, 1.0, 0.01 + w.reflection_bound);
   // Measured 0.096 (same step) and 0.073 (multi step): the MPM zone's own dispersion of the
   // 20-cell pulse over 30 mm, not the interface (whose reflection is 3e-5 of the energy).
   EXPECT_LT(r.transmitted_error, w.transmitted_bound);
   EXPECT_LT(r.created_momentum, 1e-12 * r.momentum_scale);
-  EXPECT_LT(std::abs(r.interface_energy_error), 0.01);
+  EXPECT_LT(std::abs(r.interface_energy_error), 0.01 + w.energy_loss_bound);
 }
 
 // The adaptive zone converts the cells holding half of the pulse while it passes: the same
@@ -222,8 +236,10 @@ TEST_P(HybridWave, ConversionMidPassageReflectsNoMore)
   const WaveCase w = GetParam();
   const WaveResult r = run_wave(w, true);
   EXPECT_EQ(r.conversions, 1u);
-  EXPECT_LT(r.reflected_ratio, w.reflection_bound);
-  EXPECT_NEAR(r.energy_ratio, 1.0, 0.01 + w.reflection_bound);
+  EXPECT_LT(r.reflected_ratio, w.conversion_reflection_bound > 0.0 ? w.conversion_reflection_bound
+                                                                   : w.reflection_bound);
+  EXPECT_NEAR(r.energy_ratio, 1.0 - 0.5 * w.energy_loss_bound,
+              0.01 + w.reflection_bound + 0.5 * w.energy_loss_bound);
   EXPECT_LT(r.transmitted_error, w.transmitted_bound);
 }
 
@@ -244,7 +260,19 @@ INSTANTIATE_TEST_SUITE_P(
                     // the pulse 13 % off (windows of 0.8 transits: 7 %; the shortening keeps
                     // the windows stable, their accuracy stays the deck's choice).
                     WaveCase{"newmark_50_windows_shortened", CouplingScheme::multi_step, 0.08,
-                             0.01, fem::TimeIntegrator::newmark, 50, true, 0.15}),
+                             0.01, fem::TimeIntegrator::newmark, 50, true, 0.15},
+                    // Dashpot windows (not shortened) of 10 and 50 MPM steps of CFL 0.08, 0.8
+                    // and 4 transits, 0.04 and 0.2 of the pulse's period: the first as
+                    // accurate as balanced windows (measured reflection 1.8e-5, energy 0.992,
+                    // pulse 7.5 % off), the second stable and momentum-exact but damping
+                    // and dispersing the pulse, which a Newmark step of a fifth of its period
+                    // cannot carry (reflection 6.6e-2, energy 0.870, pulse 46 % off; balanced
+                    // windows of that length: 6.1e-2 and 39 %). With a conversion mid-passage
+                    // the dashpot windows of 10 reflect 1.7e-2 (balanced: 2.9e-5; not traced).
+                    WaveCase{"dashpot_10_windows", CouplingScheme::multi_step, 0.08, 0.01,
+                             fem::TimeIntegrator::newmark, 10, false, 0.12, true, 0.0, 0.025},
+                    WaveCase{"dashpot_50_windows", CouplingScheme::multi_step, 0.08, 0.1,
+                             fem::TimeIntegrator::newmark, 50, false, 0.5, true, 0.15}),
   [](const ::testing::TestParamInfo<WaveCase>& info) { return info.param.name; });
 } // namespace
 } // namespace vulnus::coupling
