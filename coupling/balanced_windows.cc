@@ -30,11 +30,7 @@ void HybridSolver::exchange_balanced(const double time, const double dt, const b
   const std::size_t n = keys.size();
   if (first_substep)
   {
-    start_window_correction();
-    predict_interface(window, mpm_side);
-    std::ostringstream state;
-    fe_solver->save(state);
-    fe_state_at_window_start = state.str();
+    open_implicit_window(window, mpm_side);
     fe_window_impulse = step_fe(window);
     interface_now = velocity_start;
     if (static_cast<std::size_t>(balance_matrix.rows()) != 3 * n ||
@@ -68,6 +64,15 @@ void HybridSolver::exchange_balanced(const double time, const double dt, const b
   }
   interface_now = v_end;
   book_mpm_side(dt, mpm_side, v_start, v_end);
+}
+
+void HybridSolver::open_implicit_window(const double window, const mpm::SharedNodeState& mpm_side)
+{
+  start_window_correction();
+  predict_interface(window, mpm_side);
+  std::ostringstream state;
+  fe_solver->save(state);
+  fe_state_at_window_start = state.str();
 }
 
 double HybridSolver::creation_residual(const mpm::SharedNodeState& mpm_side,
@@ -268,8 +273,11 @@ bool HybridSolver::chord_iterate(const double window,
   if (largest <= tolerance)
     return true;
   ++book.balance_unconverged_windows;
+  // Relative to the interface's momentum scale, or (an interface still at rest) to the scale
+  // whose share the tolerance's floor is.
   book.largest_balance_residual =
-      std::max(book.largest_balance_residual, largest / std::max(balance_scale, 1e-300));
+      std::max(book.largest_balance_residual,
+               largest / std::max(balance_scale, tolerance / balance_tolerance));
   return false;
 }
 

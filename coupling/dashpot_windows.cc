@@ -16,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 namespace vulnus::coupling
 {
@@ -30,10 +29,10 @@ void HybridSolver::factor_dashpot(const double ratio, const std::vector<double>&
   dashpot_mass = mpm_mass;
 }
 
-bool HybridSolver::step_fe_to_impulse(const double window, const std::vector<mpm::Vector3>& target)
+void HybridSolver::step_fe_to_impulse(const double window, const std::vector<mpm::Vector3>& target)
 {
   const std::vector<mpm::Vector3>& free = free_components;
-  return chord_iterate(window, balance_free_solver, window_balance_tolerance(window, {}),
+  chord_iterate(window, balance_free_solver, window_balance_tolerance(window, {}),
                        [&](Eigen::VectorXd& g)
                        {
                          g.resize(3 * static_cast<Eigen::Index>(keys.size()));
@@ -60,11 +59,7 @@ void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
   const double ratio = window / dt;
   if (first_substep)
   {
-    start_window_correction();
-    predict_interface(window, mpm_side);
-    std::ostringstream state;
-    fe_solver->save(state);
-    fe_state_at_window_start = state.str();
+    open_implicit_window(window, mpm_side);
     // The dashpot must be no softer than the far field over this window: a matrix built for a
     // longer window (a larger effective mass) is rebuilt, one for a somewhat shorter is kept.
     if (static_cast<std::size_t>(balance_matrix.rows()) != 3 * n ||
@@ -95,7 +90,7 @@ void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
 
   // (M + T/dt m) x = T/dt m (v_0 - V) + T/2 f with x = w - V, solved with the factorization of
   // the window's first substep refined for this substep's masses and ratio.
-  Eigen::VectorXd rhs(3 * n), x = Eigen::VectorXd::Zero(3 * n), r(3 * n);
+  Eigen::VectorXd rhs(3 * n), x = Eigen::VectorXd::Zero(3 * n), r(3 * n), product(3 * n);
   for (std::size_t k = 0; k < n; ++k)
     rhs.segment<3>(3 * static_cast<Eigen::Index>(k)) =
         (ratio * mpm_side.mass[k] * (v_start[k] - mean_free[k]) + 0.5 * window * mpm_side.force[k])
@@ -105,7 +100,7 @@ void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
   bool refactored = false;
   for (unsigned int iteration = 0; iteration < 50; ++iteration)
   {
-    Eigen::VectorXd product = balance_matrix * x;
+    product.noalias() = balance_matrix * x;
     for (std::size_t k = 0; k < n; ++k)
       for (unsigned int c = 0; c < 3; ++c)
       {

@@ -107,6 +107,11 @@ public:
   /// Multi-step windows of an implicit far field, which balance their momentum within the
   /// window (coupling/balanced_windows.cc).
   bool balances_windows() const;
+  /// Implicit windows coupled through a dashpot (Hybrid/Window coupling = dashpot).
+  bool dashpot_windows() const
+  {
+    return balances_windows() && split.hybrid.window_coupling == WindowCoupling::dashpot;
+  }
   /// Up to this many interface dofs (default 750) the far field's effective interface mass
   /// takes one far-field solve per dof (exact); beyond, it is probed (3 x 5^3 = 375 solves,
   /// entries within 2 grid nodes of their dof kept).
@@ -164,7 +169,8 @@ public:
 
   /// Both sides' states and the coupling's own (window, interface velocities, corrections,
   /// ledger) in binary; restore() on a solver built from the same deck on the same rank count
-  /// continues an explicit-far-field run bit for bit.
+  /// continues the run bit for bit, with an explicit or an implicit far field, at a window's
+  /// end or in its middle.
   void save(std::ostream& out) const;
   void restore(std::istream& in);
 
@@ -215,8 +221,8 @@ private:
                         std::vector<mpm::Vector3>& v_end);
   /// Re-steps the far field from the window's start until its interface nodes receive
   /// `target` (by key) beyond what its body transmits, with balance_free_solver's chord
-  /// iteration; returns whether it got there.
-  bool step_fe_to_impulse(double window, const std::vector<mpm::Vector3>& target);
+  /// iteration (an unconverged one is booked).
+  void step_fe_to_impulse(double window, const std::vector<mpm::Vector3>& target);
   /// The balance's tolerance for a window, kg m/s (balance_scale updated with the interface's
   /// momentum, its masses the FE ones plus mpm_mass if given).
   double window_balance_tolerance(double window, const std::vector<double>& mpm_mass);
@@ -227,10 +233,6 @@ private:
                      double tolerance, const std::function<double(Eigen::VectorXd&)>& residual);
   /// dashpot_solver for substeps of window / dt = ratio with these MPM masses.
   void factor_dashpot(double ratio, const std::vector<double>& mpm_mass);
-  bool dashpot_windows() const
-  {
-    return balances_windows() && split.hybrid.window_coupling == WindowCoupling::dashpot;
-  }
   /// Last substep of a balanced window: finds the interface end velocities for which the
   /// window creates no momentum, each guess evaluated by the far field's step from the
   /// window's start; the MPM side's last substep goes from v_start to them.
@@ -259,6 +261,10 @@ private:
                            Eigen::VectorXd& g) const;
   /// Starts a window: the momentum the last one created becomes the correction.
   void start_window_correction();
+  /// A window's first substep, for balanced and dashpot windows alike: the correction, the
+  /// interface's predicted velocities, and the far field's state at the window's start kept
+  /// for its re-steps.
+  void open_implicit_window(double window, const mpm::SharedNodeState& mpm_side);
   void book_mpm_side(double dt, const mpm::SharedNodeState& mpm_side,
                      const std::vector<mpm::Vector3>& velocity_start,
                      const std::vector<mpm::Vector3>& velocity_end);

@@ -75,7 +75,7 @@ void FarFieldSolver::advance_explicit(const double dt)
   ++d.step;
 
   const double power = d.external_power();
-  d.external_work += 0.5 * dt * (d.last_power + power);
+  d.book_external_work(0.5 * dt * (d.last_power + power));
   d.last_power = power;
 }
 
@@ -106,7 +106,7 @@ void FarFieldSolver::advance_explicit_staggered(const double dt)
 
   // Power of the supports and loads over the step, at the velocity of the step (forces at t_n).
   const double power = d.external_power();
-  d.external_work += dt * power;
+  d.book_external_work(dt * power);
   d.last_power = power;
 
   d.time += dt;

@@ -14,6 +14,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -150,12 +151,19 @@ struct FarFieldSolver::Data
   /// approximately. Reset with the current velocities where boundary_now is reset.
   std::vector<double> dirichlet_velocity_booked;
   void reset_booked_dirichlet_velocities();
+  /// Adds one step's external work to external_work (and, if positive, external_work_in).
+  void book_external_work(const double work)
+  {
+    external_work += work;
+    external_work_in += std::max(work, 0.0);
+  }
 
   EvaluationSums last_sums;
   FePhaseTimes phase_times;
   double time = 0.0;
   unsigned int step = 0;
   double external_work = 0.0;
+  double external_work_in = 0.0; ///< the steps' positive external work: what loads put in
   double last_power = 0.0;
   double dissipated_energy = 0.0;
   unsigned long long n_failed_points = 0;

@@ -603,6 +603,7 @@ FeDiagnostics FarFieldSolver::diagnostics() const
   r.kinetic_energy = d.kinetic_energy();
   r.strain_energy = Utilities::MPI::sum(d.last_sums.strain_energy, d.comm);
   r.external_work = d.external_work;
+  r.external_work_in = d.external_work_in;
   r.dissipated_energy = d.dissipated_energy;
   Tensor<1, 3> momentum;
   for (const NodeRecord& node : d.owned_nodes)

@@ -42,6 +42,9 @@ struct FeDiagnostics
   double kinetic_energy = 0.0;    ///< J
   double strain_energy = 0.0;     ///< J, intact parts of the material
   double external_work = 0.0;     ///< J, work of tractions and prescribed velocities since t = 0
+  /// J, the sum of the steps' positive external work: the energy the loads have put in (a
+  /// load may take it back, external_work then falls towards zero while this stays)
+  double external_work_in = 0.0;
   double dissipated_energy = 0.0; ///< J, released by failure and plastic work
   dealii::Tensor<1, 3> momentum;  ///< kg m/s
   /// Force the supports and loads exert on the body through each slab face, N; index as

@@ -12,7 +12,7 @@ namespace binary = mpm::binary;
 
 namespace
 {
-constexpr char tag[8] = {'V', 'U', 'L', 'F', 'E', 'C', 'K', '2'};
+constexpr char tag[8] = {'V', 'U', 'L', 'F', 'E', 'C', 'K', '3'};
 
 /// The running scalars, in checkpoint order, for save (put) and restore (get) alike.
 template <class Data, class Visit>
@@ -22,6 +22,7 @@ void visit_scalars(Data& d, Visit visit)
   visit(d.time);
   visit(d.step);
   visit(d.external_work);
+  visit(d.external_work_in);
   visit(d.last_power);
   visit(d.dissipated_energy);
   visit(d.n_failed_points);

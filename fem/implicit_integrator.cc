@@ -3,6 +3,12 @@
 // material, Trilinos CG/GMRES with ML algebraic multigrid (translations as near-null space).
 //   residual  r(u) = f_ext(t_{n+1-af}) - f_int(u_{n+1-af}) - M a_{n+1-am}   (consistent M)
 //   tangent   -dr/du = (1 - af) K_t + (1 - am) / (beta dt^2) M
+// A step longer than two wave transits of the smallest cell starts Newton from the last
+// converged state, and its first correction carries the Dirichlet dofs' motion as
+// inhomogeneous constraints (spread through the tangent), instead of extrapolating the
+// acceleration: over many transits the extrapolated state is far from the answer (strains of
+// order v dt / h), and Newton from there fails, while a Dirichlet motion put into its dofs alone
+// crushes the cells next to them and makes the tangent indefinite.
 #include "fem/cell_stiffness.h"
 #include "fem/far_field_data.h"
 #include "fem/ordered_cell_loop.h"
@@ -44,6 +50,9 @@ struct ImplicitData
   TrilinosWrappers::MPI::Vector rhs, increment, external_condensed;
   TrilinosWrappers::MPI::Vector u_old, v_old, a_old;
   TrilinosWrappers::MPI::Vector u_alpha, a_alpha; ///< ghosted
+  /// A long step's first correction: the increment constraints with the Dirichlet dofs'
+  /// motion over the step as inhomogeneities.
+  AffineConstraints<double> lift_constraints;
 };
 
 namespace
@@ -221,7 +230,8 @@ void compute_newton_cell(FarFieldSolver::Data& d, const std::vector<unsigned int
 /// are evaluated on the OpenMP threads and added in cell order (the same system on any
 /// number of threads).
 EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass_factor,
-                                      const double stiffness_factor)
+                                      const double stiffness_factor,
+                                      const AffineConstraints<double>& constraints)
 {
   ImplicitData& im = *d.implicit;
   if (d.cell_local_dofs.empty())
@@ -249,8 +259,8 @@ EvaluationSums assemble_newton_system(FarFieldSolver::Data& d, const double mass
         sums.dissipated += cell.dissipated;
         d.internal_force_raw.add(cell.dofs, cell.internal_force);
         d.inertia_coupling_raw.add(cell.dofs, cell.inertia);
-        d.increment_constraints.distribute_local_to_global(cell.matrix, cell.rhs, cell.dofs,
-                                                           im.matrix, im.rhs);
+        constraints.distribute_local_to_global(cell.matrix, cell.rhs, cell.dofs, im.matrix,
+                                               im.rhs);
       });
   }
   catch (const std::runtime_error& e)
@@ -287,13 +297,39 @@ void assemble_condensed_external_forces(FarFieldSolver::Data& d, ImplicitData& i
 
 }
 
-/// Predictor a_{n+1} = a_n; Dirichlet dofs from their velocity at t_{n+1}. Returns the
-/// Dirichlet dofs' accelerations.
+/// im.lift_constraints: the hanging nodes, and every line of the increment constraints without
+/// entries (Dirichlet and dead dofs) with its owner's value of `lift` as inhomogeneity.
+void build_lift_constraints(FarFieldSolver::Data& d, ImplicitData& im,
+                            const TrilinosWrappers::MPI::Vector& lift)
+{
+  TrilinosWrappers::MPI::Vector ghosted(d.owned_dofs, d.relevant_dofs, d.comm);
+  ghosted = lift;
+  AffineConstraints<double>& lc = im.lift_constraints;
+  lc.clear();
+  lc.reinit(d.relevant_dofs);
+  lc.merge(d.hanging_constraints);
+  for (const auto& line : d.increment_constraints.get_lines())
+    if (line.entries.empty() && !lc.is_constrained(line.index))
+    {
+      lc.add_line(line.index);
+      lc.set_inhomogeneity(line.index, ghosted(line.index));
+    }
+  lc.close();
+}
+
+/// Predictor a_{n+1} = a_n, or (a long step) u_{n+1} = u_n with the Dirichlet dofs' motion
+/// in im.lift_constraints (`lifting`: whether they move at all); Dirichlet dofs from their
+/// velocity at t_{n+1}. Returns the Dirichlet dofs' accelerations.
 std::vector<double> predict_displacement(FarFieldSolver::Data& d, ImplicitData& im,
                                          const AlphaCoefficients& c, const double dt,
-                                         const double t_new)
+                                         const double t_new, const bool long_step, bool& lifting)
 {
-  d.displacement.add(dt, im.v_old, 0.5 * dt * dt, im.a_old);
+  lifting = false;
+  if (!long_step)
+    d.displacement.add(dt, im.v_old, 0.5 * dt * dt, im.a_old);
+  TrilinosWrappers::MPI::Vector lift;
+  if (long_step)
+    lift.reinit(d.owned_dofs, d.comm);
   std::vector<double> a_dirichlet(d.dirichlet_dofs.size());
   for (std::size_t k = 0; k < d.dirichlet_dofs.size(); ++k)
   {
@@ -301,12 +337,21 @@ std::vector<double> predict_displacement(FarFieldSolver::Data& d, ImplicitData& 
     const auto i = dirichlet.dof;
     const double v_new = d.dirichlet_velocity(dirichlet, t_new);
     a_dirichlet[k] = (v_new - im.v_old(i) - dt * (1.0 - c.gamma) * im.a_old(i)) / (c.gamma * dt);
-    d.displacement(i) = im.u_old(i) + dt * im.v_old(i) +
-                        dt * dt * ((0.5 - c.beta) * im.a_old(i) + c.beta * a_dirichlet[k]);
+    const double target = im.u_old(i) + dt * im.v_old(i) +
+                          dt * dt * ((0.5 - c.beta) * im.a_old(i) + c.beta * a_dirichlet[k]);
+    if (long_step)
+      lift(i) = target - im.u_old(i);
+    else
+      d.displacement(i) = target;
   }
   d.displacement.compress(VectorOperation::insert);
   d.hanging_constraints.distribute(d.displacement);
-
+  if (long_step)
+  {
+    lift.compress(VectorOperation::insert);
+    build_lift_constraints(d, im, lift);
+    lifting = lift.linfty_norm() > 0.0;
+  }
   return a_dirichlet;
 }
 
@@ -327,7 +372,8 @@ bool preconditioner_outdated(const FarFieldSolver::Data& d, const ImplicitData& 
 /// One Newton correction: AMG-preconditioned CG or GMRES on the condensed system, added to
 /// the displacement. Returns what failed ("" on success).
 std::string apply_newton_correction(FarFieldSolver::Data& d, ImplicitData& im, const double dt,
-                                    const double residual, ImplicitStepStatistics& stats)
+                                    const double residual, const bool lifting,
+                                    ImplicitStepStatistics& stats)
 {
   const auto t0 = std::chrono::steady_clock::now();
   if (preconditioner_outdated(d, im, dt))
@@ -374,7 +420,7 @@ std::string apply_newton_correction(FarFieldSolver::Data& d, ImplicitData& im, c
     im.first_solve_after_setup = false;
   }
   stats.linear_iterations += control.last_step();
-  d.increment_constraints.distribute(im.increment);
+  (lifting ? im.lift_constraints : d.increment_constraints).distribute(im.increment);
   d.displacement += im.increment;
   return {};
 }
@@ -412,7 +458,7 @@ void finish_step(FarFieldSolver::Data& d, ImplicitData& im, const AlphaCoefficie
   }
   d.assemble_external_forces(t_new, nullptr);
   const double power = d.external_power();
-  d.external_work += 0.5 * dt * (d.last_power + power);
+  d.book_external_work(0.5 * dt * (d.last_power + power));
   d.last_power = power;
 }
 } // namespace
@@ -434,7 +480,10 @@ void FarFieldSolver::advance_implicit(const double dt)
 
   assemble_condensed_external_forces(d, im, t_alpha);
 
-  const std::vector<double> a_dirichlet = predict_displacement(d, im, c, dt, t_new);
+  const bool long_step = dt > 2.0 * shortest_wave_transit();
+  bool lift_pending = false;
+  const std::vector<double> a_dirichlet =
+      predict_displacement(d, im, c, dt, t_new, long_step, lift_pending);
 
   const double a_factor = 1.0 / (c.beta * dt * dt);
   const double mass_factor = (1.0 - c.alpha_m) * a_factor;
@@ -472,7 +521,8 @@ void FarFieldSolver::advance_implicit(const double dt)
     const auto assembly_start = std::chrono::steady_clock::now();
     try
     {
-      sums = assemble_newton_system(d, mass_factor, stiffness_factor);
+      sums = assemble_newton_system(d, mass_factor, stiffness_factor,
+                                    lift_pending ? im.lift_constraints : d.increment_constraints);
     }
     catch (const std::runtime_error& e)
     {
@@ -496,11 +546,13 @@ void FarFieldSolver::advance_implicit(const double dt)
     const bool stagnated =
         it >= 2 && residual > 0.5 * previous_residual && residual <= 1e-4 * scale;
     previous_residual = residual;
-    if (residual <= d.prm.newton_absolute_tolerance ||
+    // A lifted first system carries the Dirichlet motion still to be made: never converged.
+    if (!lift_pending &&
+        (residual <= d.prm.newton_absolute_tolerance ||
         residual <= d.prm.newton_relative_tolerance * scale || stagnated ||
         (it > 0 &&
          (last_correction <= std::max(d.prm.newton_relative_tolerance, 1e-10) * step_increment ||
-          (last_correction <= correction_floor && residual <= 0.1 * first_residual))))
+          (last_correction <= correction_floor && residual <= 0.1 * first_residual)))))
     {
       converged = true;
       break;
@@ -508,7 +560,8 @@ void FarFieldSolver::advance_implicit(const double dt)
     if (it == d.prm.max_newton_iterations)
       break;
 
-    failure = apply_newton_correction(d, im, dt, residual, stats);
+    failure = apply_newton_correction(d, im, dt, residual, lift_pending, stats);
+    lift_pending = false;
     if (!failure.empty())
       break;
     last_correction = im.increment.l2_norm();

@@ -68,7 +68,8 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
   if (solver.balances_windows())
   {
     const std::size_t n_dofs = 3 * solver.n_interface_nodes();
-    o << "; implicit windows balanced (the far field's effective interface mass takes ";
+    o << "; implicit windows " << (solver.dashpot_windows() ? "with a dashpot" : "balanced")
+      << " (the far field's effective interface mass takes ";
     if (n_dofs <= solver.exact_balance_dofs())
       o << n_dofs << " far-field solves per window length)";
     else
@@ -76,8 +77,12 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
                              coupling::HybridSolver::probe_period *
                              coupling::HybridSolver::probe_period
         << " probing far-field solves per window length for its " << n_dofs << " dofs)";
-    o << ", each window at most one wave transit of the far field's smallest cell ("
-      << solver.fe().shortest_wave_transit() << " s now)";
+    if (solver.dashpot_windows())
+      o << ", windows of any length (a wave transit of the far field's smallest cell is "
+        << solver.fe().shortest_wave_transit() << " s now)";
+    else
+      o << ", each window at most one wave transit of the far field's smallest cell ("
+        << solver.fe().shortest_wave_transit() << " s now)";
   }
   const mpm::RankGroup& ranks = solver.mpm().rank_group();
   if (ranks.distributed())
@@ -175,6 +180,15 @@ std::vector<std::string> HybridStepper::final_warnings() const
                        " far-field cells near failure or interface nodes moved too far lay at "
                        "or beyond the adaptive zone's reach at one check; widen Hybrid/Adaptive "
                        "zone reach");
+  if (const unsigned long windows = solver.ledger().balance_unconverged_windows; windows > 0)
+  {
+    std::ostringstream o;
+    o << "*** " << windows << " implicit window(s) ended before the far field's step met its "
+      << "interface impulse (largest residual left " << solver.ledger().largest_balance_residual
+      << " of the interface's momentum scale; what was left went into the next window): "
+      << "shorten the windows (Hybrid/Substeps) or use Far field/Integrator = central difference";
+    warnings.push_back(o.str());
+  }
   const std::vector<std::string> mpm_warnings = mpm_final_warnings(solver.mpm());
   warnings.insert(warnings.end(), mpm_warnings.begin(), mpm_warnings.end());
   return warnings;
