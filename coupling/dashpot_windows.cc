@@ -72,9 +72,13 @@ void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
     if (interface_now.size() != n)
       interface_now = velocity_start;
     // The free step: no impulse on the far field's interface nodes, from the guess that its
-    // interface keeps its velocity (the summed-mass prediction over a long window may move
-    // it by many cells).
-    velocity_end = velocity_start;
+    // interface keeps its velocity for about two wave transits of the smallest cell and then
+    // stands (its mean over the window V = keep v_start): a window of many transits would
+    // otherwise drive it by many cells, beyond what the far field's Newton step comes back
+    // from (200 transits: 4 mm on a 12 mm block). The summed-mass prediction moves it further.
+    const double keep = std::min(1.0, 2.0 * fe_solver->shortest_wave_transit() / window);
+    for (std::size_t k = 0; k < n; ++k)
+      velocity_end[k] = (2.0 * keep - 1.0) * velocity_start[k];
     fe_window_impulse = step_fe(window);
     step_fe_to_impulse(window, std::vector<mpm::Vector3>(n, mpm::Vector3::Zero()));
     dashpot_free_velocity.resize(n);
