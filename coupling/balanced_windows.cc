@@ -250,7 +250,7 @@ double HybridSolver::window_balance_tolerance(const double window,
                   1e-10 * largest_mass * split.fe.interface_cell_size / window);
 }
 
-bool HybridSolver::chord_iterate(const double window,
+void HybridSolver::chord_iterate(const double window,
                                  const Eigen::SparseLU<Eigen::SparseMatrix<double>>& solver,
                                  const double tolerance,
                                  const std::function<double(Eigen::VectorXd&)>& residual)
@@ -271,14 +271,13 @@ bool HybridSolver::chord_iterate(const double window,
   }
   book.balance_solves += iteration;
   if (largest <= tolerance)
-    return true;
+    return;
   ++book.balance_unconverged_windows;
   // Relative to the interface's momentum scale, or (an interface still at rest) to the scale
   // whose share the tolerance's floor is.
   book.largest_balance_residual =
       std::max(book.largest_balance_residual,
                largest / std::max(balance_scale, tolerance / balance_tolerance));
-  return false;
 }
 
 void HybridSolver::balance_window(const double window, const double dt,

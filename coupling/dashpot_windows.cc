@@ -32,20 +32,19 @@ void HybridSolver::factor_dashpot(const double ratio, const std::vector<double>&
 void HybridSolver::step_fe_to_impulse(const double window, const std::vector<mpm::Vector3>& target)
 {
   const std::vector<mpm::Vector3>& free = free_components;
-  chord_iterate(window, balance_free_solver, window_balance_tolerance(window, {}),
-                       [&](Eigen::VectorXd& g)
-                       {
-                         g.resize(3 * static_cast<Eigen::Index>(keys.size()));
-                         double largest = 0.0;
-                         for (std::size_t k = 0; k < keys.size(); ++k)
-                         {
-                           const mpm::Vector3 gk =
-                               (fe_window_impulse[k] - target[k]).cwiseProduct(free[k]);
-                           g.segment<3>(3 * static_cast<Eigen::Index>(k)) = gk;
-                           largest = std::max(largest, gk.cwiseAbs().maxCoeff());
-                         }
-                         return largest;
-                       });
+  auto residual = [&](Eigen::VectorXd& g)
+  {
+    g.resize(3 * static_cast<Eigen::Index>(keys.size()));
+    double largest = 0.0;
+    for (std::size_t k = 0; k < keys.size(); ++k)
+    {
+      const mpm::Vector3 gk = (fe_window_impulse[k] - target[k]).cwiseProduct(free[k]);
+      g.segment<3>(3 * static_cast<Eigen::Index>(k)) = gk;
+      largest = std::max(largest, gk.cwiseAbs().maxCoeff());
+    }
+    return largest;
+  };
+  chord_iterate(window, balance_free_solver, window_balance_tolerance(window, {}), residual);
 }
 
 void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,

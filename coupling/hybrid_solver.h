@@ -228,8 +228,8 @@ private:
   double window_balance_tolerance(double window, const std::vector<double>& mpm_mass);
   /// Newton's chord iteration of a window: while residual(g) (its largest component) exceeds
   /// the tolerance, velocity_end moves by -solver.solve(g) and the far field re-steps from the
-  /// window's start; books the re-steps and an unconverged window. Returns whether it got there.
-  bool chord_iterate(double window, const Eigen::SparseLU<Eigen::SparseMatrix<double>>& solver,
+  /// window's start; books the re-steps and an unconverged window.
+  void chord_iterate(double window, const Eigen::SparseLU<Eigen::SparseMatrix<double>>& solver,
                      double tolerance, const std::function<double(Eigen::VectorXd&)>& residual);
   /// dashpot_solver for substeps of window / dt = ratio with these MPM masses.
   void factor_dashpot(double ratio, const std::vector<double>& mpm_mass);
