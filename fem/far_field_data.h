@@ -138,7 +138,33 @@ struct FarFieldSolver::Data
   /// live cell) in this order.
   std::vector<dealii::DoFHandler<3>::active_cell_iterator> live_cells;
   std::vector<double> cell_force_values;
+  /// Global dofs of each live cell (n_dofs_per_cell each), in live-cell order.
+  std::vector<dealii::types::global_dof_index> live_cell_dofs;
+  /// For each owned dof (local index l), where its live cells' forces sit in
+  /// cell_force_values, in cell order: owned_dof_forces[owned_dof_force_begin[l] ...
+  /// owned_dof_force_begin[l + 1]). The threads sum each dof's forces in that order.
+  std::vector<std::size_t> owned_dof_force_begin;
+  std::vector<std::size_t> owned_dof_forces;
+  /// The entries of cell_force_values whose dof another rank owns, in cell order.
+  std::vector<std::size_t> ghost_dof_forces;
   void index_cell_dofs(const Vector& ghosted_layout);
+
+  /// The explicit force pass's geometry (fem/cell_shapes.cc). The mesh is the reference
+  /// configuration, so a cell's shape-function gradients and JxW never change; cells that
+  /// are translations of each other (every vertex offset equal to 1e-10 of the cell's size)
+  /// share one entry, as FEValues would reuse them: gradients[q * n_nodes + a] of the scalar
+  /// shape function a (of the base element, n_nodes of them) at point q, jxw[q].
+  struct CellShape
+  {
+    std::vector<Eigen::Vector3d> gradients;
+    std::vector<double> jxw;
+  };
+  std::vector<CellShape> cell_shapes;
+  std::vector<unsigned int> live_cell_shape; ///< by live cell: its entry of cell_shapes
+  std::vector<unsigned int> dof_node;        ///< by cell dof: its scalar shape function
+  std::vector<unsigned int> dof_component;   ///< by cell dof: the component it moves
+  /// Fills cell_shapes, live_cell_shape, dof_node and dof_component for live_cells.
+  void index_cell_shapes();
 
   /// Boundary forces at the current state and their integrals: over the last step for the
   /// interface nodes, since the start (this rank) for the supports.

@@ -76,6 +76,7 @@ struct ConvertedPoint
 struct FePhaseTimes
 {
   double internal_forces = 0.0; ///< material update at the quadrature points and assembly
+  double assembly = 0.0;        ///< of those, the cells' forces added in cell order (serial)
   double rest = 0.0;            ///< external forces, vector updates, ghost exchange, constraints
   unsigned long long n_steps = 0;
   unsigned long long quiet_cells_skipped = 0; ///< cell evaluations skipped as at rest

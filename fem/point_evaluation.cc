@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <chrono>
 #include <exception>
 #include <cmath>
 #include <limits>
@@ -37,7 +38,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
                                                               Vector* condensed)
 {
   const unsigned int n_dofs = fe.n_dofs_per_cell();
-  const std::vector<unsigned int> component = dof_components(fe);
+  const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
 
   const materials::FailureParameters* criterion = proximity_criterion();
   const bool fibers = material->uses_fibers();
@@ -55,7 +56,6 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
 
   struct Scratch
   {
-    std::vector<Tensor<1, 3>> grads; // [q * n_dofs + i]
     std::vector<double> u_local;
     materials::PointResponse response;
     std::vector<Eigen::Matrix3d> F, F_law, sigma, P;
@@ -76,7 +76,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   };
   // One live cell's forces, energies, stress, failure, wave speed and failure proximity.
   enum class Outcome { evaluated, quiet, failed };
-  auto evaluate_cell = [&](const long c, FEValues<3>& fe_values, Scratch& w) -> Outcome
+  auto evaluate_cell = [&](const long c, Scratch& w) -> Outcome
   {
     const auto& cell = live_cells[c];
     const unsigned int k = cell->active_cell_index();
@@ -88,9 +88,11 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
     {
       // Its forces, energy and stress are those of the rest state, to a strain of 1e-12.
       std::copy_n(committed_states.begin() + first, n_q_points, trial_states.begin() + first);
+      std::fill_n(&cell_force_values[std::size_t(c) * n_dofs], n_dofs, 0.0);
       return Outcome::quiet;
     }
-    fe_values.reinit(cell);
+    const CellShape& shape = cell_shapes[live_cell_shape[c]];
+    const Eigen::Vector3d* grads = shape.gradients.data(); // [q * n_nodes + a]
     double* f_local = &cell_force_values[std::size_t(c) * n_dofs];
     std::fill_n(f_local, n_dofs, 0.0);
     CellForces& r = results[c];
@@ -99,15 +101,11 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
     unsigned char flags = 0;
     for (unsigned int q = 0; q < n_q_points; ++q)
     {
-      Tensor<2, 3> F = unit_symmetric_tensor<3>();
+      Eigen::Matrix3d& F = w.F[q];
+      F.setIdentity();
       for (unsigned int i = 0; i < n_dofs; ++i)
-      {
-        Tensor<1, 3>& grad = w.grads[q * n_dofs + i];
-        grad = fe_values.shape_grad_component(i, q, component[i]);
-        F[component[i]] += w.u_local[i] * grad;
-      }
-      w.F[q] = to_eigen(F);
-      w.JxW[q] = fe_values.JxW(q);
+        F.row(dof_component[i]) += w.u_local[i] * grads[q * n_nodes + dof_node[i]].transpose();
+      w.JxW[q] = shape.jxw[q];
     }
     // The law sees F, or F_bar with the cell's mean dilatation (fem/volume_averaged_cell.h).
     double j_bar = 0.0;
@@ -160,8 +158,8 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
     for (unsigned int q = 0; q < n_q_points; ++q)
       for (unsigned int i = 0; i < n_dofs; ++i)
       {
-        const Tensor<1, 3>& grad = w.grads[q * n_dofs + i];
-        const auto row = w.P[q].row(component[i]);
+        const Eigen::Vector3d& grad = grads[q * n_nodes + dof_node[i]];
+        const auto row = w.P[q].row(dof_component[i]);
         f_local[i] += (row[0] * grad[0] + row[1] * grad[1] + row[2] * grad[2]) * w.JxW[q];
       }
     cell_stress[k] = stress_sum / volume;
@@ -173,15 +171,11 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
     return Outcome::evaluated;
   };
 
-  // FEValues reuses the last cell's gradients for a cell it takes for a translation of it,
-  // which cells of equal size are to round-off: each chunk of cells starts a FEValues of its
-  // own so that the values, like the order of the sums, do not depend on the threads.
   constexpr long chunk = 256;
   const long n_chunks = (n_live + chunk - 1) / chunk;
 #pragma omp parallel reduction(+ : quiet_skipped)
   {
     Scratch w;
-    w.grads.resize(std::size_t(n_q_points) * n_dofs);
     w.u_local.resize(n_dofs);
     for (auto* v : {&w.F, &w.F_law, &w.sigma, &w.P})
       v->resize(n_q_points);
@@ -193,10 +187,9 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       long c = chunk_index * chunk;
       try
       {
-        FEValues<3> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
         for (; c < end; ++c)
         {
-          const Outcome outcome = evaluate_cell(c, fe_values, w);
+          const Outcome outcome = evaluate_cell(c, w);
           results[c].evaluated = outcome == Outcome::evaluated;
           quiet_skipped += outcome == Outcome::quiet ? 1 : 0;
         }
@@ -214,31 +207,66 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   phase_times.quiet_cells_skipped += quiet_skipped;
 
   // The cells' forces in cell order, as a serial loop would add them.
+  const auto assembly_start = std::chrono::steady_clock::now();
   EvaluationSums sums;
   const bool inverted = first_failed < n_live;
-  std::vector<types::global_dof_index> dofs(n_dofs);
+  // Owned dofs gather their cells' forces in cell order on the threads (the sums a serial
+  // loop over the cells would make, bit for bit); dofs of other ranks go through add in cell
+  // order. Without hanging nodes -f_int goes into *condensed the same way.
+  double* f_raw = internal_force_raw.trilinos_vector()[0];
+  const bool condense_in_place =
+    condensed != nullptr && hanging_constraints.n_constraints() == 0 &&
+    condensed->trilinos_vector().Map().PointSameAs(internal_force_raw.trilinos_vector().Map());
+  double* f_condensed = condense_in_place ? condensed->trilinos_vector()[0] : nullptr;
+  if (!inverted)
+  {
+    const long n_owned = static_cast<long>(owned_dof_force_begin.size()) - 1;
+#pragma omp parallel for schedule(static)
+    for (long l = 0; l < n_owned; ++l)
+    {
+      double sum = f_raw[l];
+      double minus_sum = f_condensed != nullptr ? f_condensed[l] : 0.0;
+      for (std::size_t e = owned_dof_force_begin[l]; e < owned_dof_force_begin[l + 1]; ++e)
+      {
+        const double f = cell_force_values[owned_dof_forces[e]]; // zero for a quiet cell
+        sum += f;
+        minus_sum += -f;
+      }
+      f_raw[l] = sum;
+      if (f_condensed != nullptr)
+        f_condensed[l] = minus_sum;
+    }
+  }
   dealii::Vector<double> f_local(n_dofs);
-  std::vector<double> f_values(n_dofs);
+  std::vector<types::global_dof_index> dofs(n_dofs);
   for (long c = 0; c < n_live && !inverted; ++c)
   {
     if (!results[c].evaluated)
       continue;
     sums.strain_energy += results[c].strain_energy;
     sums.dissipated += results[c].dissipated;
-    live_cells[c]->get_dof_indices(dofs);
-    const double* f = &cell_force_values[std::size_t(c) * n_dofs];
-    std::copy_n(f, n_dofs, f_values.begin());
-    internal_force_raw.add(dofs, f_values);
-    if (condensed != nullptr)
+    if (condensed != nullptr && !condense_in_place)
     {
+      const double* f = &cell_force_values[std::size_t(c) * n_dofs];
       for (unsigned int i = 0; i < n_dofs; ++i)
         f_local(i) = -f[i];
+      std::copy_n(&live_cell_dofs[std::size_t(c) * n_dofs], n_dofs, dofs.begin());
       hanging_constraints.distribute_local_to_global(f_local, dofs, *condensed);
     }
+  }
+  for (std::size_t k = 0; k < ghost_dof_forces.size() && !inverted; ++k)
+  {
+    const std::size_t entry = ghost_dof_forces[k];
+    const double f = cell_force_values[entry], minus_f = -f;
+    internal_force_raw.add(1, &live_cell_dofs[entry], &f);
+    if (f_condensed != nullptr)
+      condensed->add(1, &live_cell_dofs[entry], &minus_f);
   }
   internal_force_raw.compress(VectorOperation::add);
   if (condensed != nullptr)
     condensed->compress(VectorOperation::add);
+  phase_times.assembly +=
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - assembly_start).count();
   if (Utilities::MPI::max(unexpected ? 1 : 0, comm) == 0)
     throw_if_any(inverted, message, comm);
   else if (unexpected)
@@ -271,15 +299,24 @@ void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)
   const Epetra_BlockMap& map = ghosted_layout.trilinos_vector().Map();
   std::vector<types::global_dof_index> dofs(n_dofs);
   cell_local_dofs.assign(std::size_t(triangulation.n_active_cells()) * n_dofs, 0);
+  const Epetra_BlockMap& owned_map = internal_force_raw.trilinos_vector().Map();
   live_cells.clear();
+  live_cell_dofs.clear();
+  std::vector<int> live_cell_owned_dofs; // position among the owned dofs, -1 if not owned
   bool missing = false;
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
     if (!cell->is_locally_owned())
       continue;
-    if (!is_converted(cell))
-      live_cells.push_back(cell);
     cell->get_dof_indices(dofs);
+    if (!is_converted(cell))
+    {
+      live_cells.push_back(cell);
+      live_cell_dofs.insert(live_cell_dofs.end(), dofs.begin(), dofs.end());
+      for (const auto dof : dofs)
+        live_cell_owned_dofs.push_back(
+          owned_map.LID(static_cast<TrilinosWrappers::types::int_type>(dof)));
+    }
     for (unsigned int i = 0; i < n_dofs; ++i)
     {
       const int local = map.LID(static_cast<TrilinosWrappers::types::int_type>(dofs[i]));
@@ -288,6 +325,22 @@ void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)
     }
   }
   throw_if_any(missing, "far field: a cell's dof is not in the ghosted vector", comm);
+
+  owned_dof_force_begin.assign(std::size_t(owned_map.NumMyElements()) + 1, 0);
+  for (const int l : live_cell_owned_dofs)
+    if (l >= 0)
+      ++owned_dof_force_begin[l + 1];
+  for (std::size_t l = 1; l < owned_dof_force_begin.size(); ++l)
+    owned_dof_force_begin[l] += owned_dof_force_begin[l - 1];
+  owned_dof_forces.resize(owned_dof_force_begin.back());
+  ghost_dof_forces.clear();
+  std::vector<std::size_t> next(owned_dof_force_begin.begin(), owned_dof_force_begin.end() - 1);
+  for (std::size_t entry = 0; entry < live_cell_owned_dofs.size(); ++entry)
+    if (const int l = live_cell_owned_dofs[entry]; l >= 0)
+      owned_dof_forces[next[l]++] = entry;
+    else
+      ghost_dof_forces.push_back(entry);
+  index_cell_shapes();
 }
 
 bool FarFieldSolver::Data::is_quiet(const std::vector<double>& u_local, const double size,
@@ -308,13 +361,25 @@ void FarFieldSolver::Data::commit_states()
 {
   std::swap(committed_states, trial_states);
   unsigned long long n_failed = 0;
-  for (const auto& cell : triangulation.active_cell_iterators())
-    if (owns_live(cell))
-    {
-      const std::size_t first = std::size_t(cell->active_cell_index()) * n_q_points;
-      for (unsigned int q = 0; q < n_q_points; ++q)
-        n_failed += committed_states[first + q].failure != materials::intact ? 1 : 0;
-    }
+  auto count_failed = [&](const unsigned int cell_index)
+  {
+    const std::size_t first = std::size_t(cell_index) * n_q_points;
+    unsigned long long n = 0;
+    for (unsigned int q = 0; q < n_q_points; ++q)
+      n += committed_states[first + q].failure != materials::intact ? 1 : 0;
+    return n;
+  };
+  if (!cell_local_dofs.empty()) // live_cells is current
+  {
+    const long n_live = static_cast<long>(live_cells.size());
+#pragma omp parallel for schedule(static) reduction(+ : n_failed)
+    for (long c = 0; c < n_live; ++c)
+      n_failed += count_failed(live_cells[c]->active_cell_index());
+  }
+  else
+    for (const auto& cell : triangulation.active_cell_iterators())
+      if (owns_live(cell))
+        n_failed += count_failed(cell->active_cell_index());
   n_failed = Utilities::MPI::sum(n_failed, comm);
   // Loud on the first failure and whenever the count has doubled since the last warning.
   const bool warn = n_failed > 0 && (n_failed_points == 0 || n_failed >= 2 * last_warned_failures);
@@ -377,8 +442,11 @@ void FarFieldSolver::Data::assemble_external_forces(const double t, Vector* cond
 double FarFieldSolver::Data::external_power() const
 {
   double power = 0.0;
-  for (const auto i : owned_dofs)
-    power += velocity(i) * external_force_raw(i);
+  // Local positions follow the owned dofs' ascending order: the sum owned_dofs would make.
+  const double* v = velocity.trilinos_vector()[0];
+  const double* f = external_force_raw.trilinos_vector()[0];
+  for (std::size_t l = 0; l < velocity.locally_owned_size(); ++l)
+    power += v[l] * f[l];
   for (const DirichletDof& d : dirichlet_dofs)
     power +=
         velocity(d.dof) * (internal_force_raw(d.dof) + lumped_mass(d.dof) * acceleration(d.dof) -
@@ -391,8 +459,10 @@ double FarFieldSolver::Data::kinetic_energy() const
   double energy = 0.0;
   if (!is_implicit())
   {
-    for (const auto i : owned_dofs)
-      energy += 0.5 * lumped_mass(i) * velocity(i) * velocity(i);
+    const double* m = lumped_mass.trilinos_vector()[0];
+    const double* v = velocity.trilinos_vector()[0];
+    for (std::size_t l = 0; l < velocity.locally_owned_size(); ++l)
+      energy += 0.5 * m[l] * v[l] * v[l];
     return Utilities::MPI::sum(energy, comm);
   }
   // Consistent mass: 1/2 int rho0 |v_h|^2 dV, evaluated at the quadrature points.

@@ -266,6 +266,14 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                        {"interface_impulse_in_transit_kg_m_s", solver.impulse_in_transit().norm()},
                        {"mpm_seconds", mpm_side.phase_times().total() - mpm_side.phase_times().coupling},
                        {"coupling_and_fe_seconds", mpm_side.phase_times().coupling}};
+  if (split.fe.integrator == fem::TimeIntegrator::central_difference)
+  {
+    const fem::FePhaseTimes& fe_phases = solver.fe().explicit_phase_times();
+    summary["hybrid"]["fe_phase_seconds"] = {
+      {"cell_evaluation", fe_phases.internal_forces - fe_phases.assembly},
+      {"assembly", fe_phases.assembly},
+      {"rest_of_step", fe_phases.rest}};
+  }
   if (solver.balances_windows())
     summary["hybrid"]["balance"] = {{"far_field_re_steps", ledger.balance_solves},
                                     {"unconverged_windows", ledger.balance_unconverged_windows},

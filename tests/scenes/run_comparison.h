@@ -24,7 +24,7 @@ inline nlohmann::json summary_without_timing(const std::filesystem::path& run)
   s.erase("wall_seconds");
   s.erase("particle_steps_per_second");
   if (s.contains("hybrid"))
-    for (const char* key : {"mpm_seconds", "coupling_and_fe_seconds"})
+    for (const char* key : {"mpm_seconds", "coupling_and_fe_seconds", "fe_phase_seconds"})
       s["hybrid"].erase(key);
   if (s.contains("hybrid") && s["hybrid"].contains("balance"))
     s["hybrid"]["balance"].erase("effective_mass_seconds");
