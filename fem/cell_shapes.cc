@@ -38,14 +38,10 @@ void FarFieldSolver::Data::index_cell_shapes()
 {
   const unsigned int n_dofs = fe.n_dofs_per_cell();
   const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
+  dof_component = dof_components(fe);
   dof_node.resize(n_dofs);
-  dof_component.resize(n_dofs);
   for (unsigned int i = 0; i < n_dofs; ++i)
-  {
-    const auto [component, node] = fe.system_to_component_index(i);
-    dof_component[i] = component;
-    dof_node[i] = node;
-  }
+    dof_node[i] = fe.system_to_component_index(i).second;
 
   cell_shapes.clear();
   live_cell_shape.resize(live_cells.size());

@@ -138,15 +138,18 @@ struct FarFieldSolver::Data
   /// live cell) in this order.
   std::vector<dealii::DoFHandler<3>::active_cell_iterator> live_cells;
   std::vector<double> cell_force_values;
-  /// Global dofs of each live cell (n_dofs_per_cell each), in live-cell order.
-  std::vector<dealii::types::global_dof_index> live_cell_dofs;
   /// For each owned dof (local index l), where its live cells' forces sit in
   /// cell_force_values, in cell order: owned_dof_forces[owned_dof_force_begin[l] ...
   /// owned_dof_force_begin[l + 1]). The threads sum each dof's forces in that order.
   std::vector<std::size_t> owned_dof_force_begin;
   std::vector<std::size_t> owned_dof_forces;
   /// The entries of cell_force_values whose dof another rank owns, in cell order.
-  std::vector<std::size_t> ghost_dof_forces;
+  struct GhostForce
+  {
+    std::size_t entry;
+    dealii::types::global_dof_index dof;
+  };
+  std::vector<GhostForce> ghost_dof_forces;
   void index_cell_dofs(const Vector& ghosted_layout);
 
   /// The explicit force pass's geometry (fem/cell_shapes.cc). The mesh is the reference

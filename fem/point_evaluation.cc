@@ -250,17 +250,17 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       const double* f = &cell_force_values[std::size_t(c) * n_dofs];
       for (unsigned int i = 0; i < n_dofs; ++i)
         f_local(i) = -f[i];
-      std::copy_n(&live_cell_dofs[std::size_t(c) * n_dofs], n_dofs, dofs.begin());
+      live_cells[c]->get_dof_indices(dofs);
       hanging_constraints.distribute_local_to_global(f_local, dofs, *condensed);
     }
   }
   for (std::size_t k = 0; k < ghost_dof_forces.size() && !inverted; ++k)
   {
-    const std::size_t entry = ghost_dof_forces[k];
-    const double f = cell_force_values[entry], minus_f = -f;
-    internal_force_raw.add(1, &live_cell_dofs[entry], &f);
+    const GhostForce& ghost = ghost_dof_forces[k];
+    const double f = cell_force_values[ghost.entry], minus_f = -f;
+    internal_force_raw.add(1, &ghost.dof, &f);
     if (f_condensed != nullptr)
-      condensed->add(1, &live_cell_dofs[entry], &minus_f);
+      condensed->add(1, &ghost.dof, &minus_f);
   }
   internal_force_raw.compress(VectorOperation::add);
   if (condensed != nullptr)
@@ -301,7 +301,7 @@ void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)
   cell_local_dofs.assign(std::size_t(triangulation.n_active_cells()) * n_dofs, 0);
   const Epetra_BlockMap& owned_map = internal_force_raw.trilinos_vector().Map();
   live_cells.clear();
-  live_cell_dofs.clear();
+  ghost_dof_forces.clear();
   std::vector<int> live_cell_owned_dofs; // position among the owned dofs, -1 if not owned
   bool missing = false;
   for (const auto& cell : dof_handler.active_cell_iterators())
@@ -312,10 +312,13 @@ void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)
     if (!is_converted(cell))
     {
       live_cells.push_back(cell);
-      live_cell_dofs.insert(live_cell_dofs.end(), dofs.begin(), dofs.end());
       for (const auto dof : dofs)
-        live_cell_owned_dofs.push_back(
-          owned_map.LID(static_cast<TrilinosWrappers::types::int_type>(dof)));
+      {
+        const int owned = owned_map.LID(static_cast<TrilinosWrappers::types::int_type>(dof));
+        if (owned < 0)
+          ghost_dof_forces.push_back({live_cell_owned_dofs.size(), dof});
+        live_cell_owned_dofs.push_back(owned);
+      }
     }
     for (unsigned int i = 0; i < n_dofs; ++i)
     {
@@ -333,13 +336,10 @@ void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)
   for (std::size_t l = 1; l < owned_dof_force_begin.size(); ++l)
     owned_dof_force_begin[l] += owned_dof_force_begin[l - 1];
   owned_dof_forces.resize(owned_dof_force_begin.back());
-  ghost_dof_forces.clear();
   std::vector<std::size_t> next(owned_dof_force_begin.begin(), owned_dof_force_begin.end() - 1);
   for (std::size_t entry = 0; entry < live_cell_owned_dofs.size(); ++entry)
     if (const int l = live_cell_owned_dofs[entry]; l >= 0)
       owned_dof_forces[next[l]++] = entry;
-    else
-      ghost_dof_forces.push_back(entry);
   index_cell_shapes();
 }
 
@@ -361,25 +361,15 @@ void FarFieldSolver::Data::commit_states()
 {
   std::swap(committed_states, trial_states);
   unsigned long long n_failed = 0;
-  auto count_failed = [&](const unsigned int cell_index)
-  {
-    const std::size_t first = std::size_t(cell_index) * n_q_points;
-    unsigned long long n = 0;
-    for (unsigned int q = 0; q < n_q_points; ++q)
-      n += committed_states[first + q].failure != materials::intact ? 1 : 0;
-    return n;
-  };
-  if (!cell_local_dofs.empty()) // live_cells is current
-  {
-    const long n_live = static_cast<long>(live_cells.size());
+  // The states come from a pass over live_cells (the integrators commit after one).
+  const long n_live = static_cast<long>(live_cells.size());
 #pragma omp parallel for schedule(static) reduction(+ : n_failed)
-    for (long c = 0; c < n_live; ++c)
-      n_failed += count_failed(live_cells[c]->active_cell_index());
+  for (long c = 0; c < n_live; ++c)
+  {
+    const std::size_t first = std::size_t(live_cells[c]->active_cell_index()) * n_q_points;
+    for (unsigned int q = 0; q < n_q_points; ++q)
+      n_failed += committed_states[first + q].failure != materials::intact ? 1 : 0;
   }
-  else
-    for (const auto& cell : triangulation.active_cell_iterators())
-      if (owns_live(cell))
-        n_failed += count_failed(cell->active_cell_index());
   n_failed = Utilities::MPI::sum(n_failed, comm);
   // Loud on the first failure and whenever the count has doubled since the last warning.
   const bool warn = n_failed > 0 && (n_failed_points == 0 || n_failed >= 2 * last_warned_failures);
