@@ -27,6 +27,15 @@ void declare_far_field_section(EntryTable& table)
                 "own J) or cell (F-bar with the cell's mean J, de Souza Neto et al. 1996): cell "
                 "removes the volumetric locking of nearly incompressible tissue (bulk:shear 1e3 "
                 "and more); docs/locking.md.");
+  table.declare("Integration", "automatic", Patterns::Selection("automatic|full|one point"),
+                "Points per cell where the law is evaluated: full (2 x 2 x 2 Gauss points for "
+                "Q1), one point (the cell's mean gradient, with hourglass forces of the full "
+                "element's deviatoric stiffness; explicit Q1 only, about a third of the full "
+                "cells' cost), or automatic: one point for the explicit Q1 far field, full "
+                "otherwise; docs/far_field.md section 10.");
+  table.declare("Hourglass coefficient", "1", Patterns::Double(0.0, 10.0),
+                "One-point integration: scale of the hourglass stiffness, in (0, 10]; 1 is the "
+                "full element's response to the hourglass modes at small strain.");
   table.declare("CFL", "0.5", Patterns::Double(0.0, 1.0),
                 "Explicit: Courant number in dt = CFL h_min / c over the cells, in (0, 1].");
   table.declare("Time step", "1e-5", Patterns::Double(0.0),
@@ -82,6 +91,12 @@ void parse_far_field_section(dealii::ParameterHandler& prm, RunParameters& param
                                                      : fem::TimeIntegrator::central_difference;
   f.degree = static_cast<unsigned int>(prm.get_integer("Element degree"));
   f.volume_averaging = prm.get("Volume averaging") == "cell";
+  const std::string integration = prm.get("Integration");
+  f.one_point_integration =
+    integration == "one point" ||
+    (integration == "automatic" && f.integrator == fem::TimeIntegrator::central_difference &&
+     f.degree == 1);
+  f.hourglass_coefficient = prm.get_double("Hourglass coefficient");
   f.cfl = prm.get_double("CFL");
   f.time_step = prm.get_double("Time step");
   f.spectral_radius = prm.get_double("Spectral radius");

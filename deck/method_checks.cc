@@ -32,6 +32,8 @@ std::string entry_of(std::string parameter, const std::string& body)
     {"focus_max", "Hybrid/Adaptive zone reach"},
     {"integrator", "Far field/Integrator"},
     {"degree", "Far field/Element degree"},
+    {"one_point_integration", "Far field/Integration"},
+    {"hourglass_coefficient", "Far field/Hourglass coefficient"},
     {"cfl", "Far field/CFL"},
     {"time_step", "Far field/Time step"},
     {"spectral_radius", "Far field/Spectral radius"},

@@ -1,7 +1,9 @@
 // The explicit force pass's table of cell geometry: each distinct live cell shape's scalar
 // shape-function gradients and JxW at the quadrature points, computed once with FEValues,
-// and which node and component each cell dof moves.
+// and which node and component each cell dof moves; with one-point integration each shape's
+// mean gradients and hourglass stiffness instead.
 #include "fem/far_field_data.h"
+#include "fem/hourglass.h"
 
 #include <deal.II/fe/fe_values.h>
 
@@ -32,6 +34,49 @@ ShapeKey shape_key(const DoFHandler<3>::active_cell_iterator& cell, const double
   }
   return key;
 }
+
+/// One-point integration's geometry of a Q1 cell (Flanagan and Belytschko 1981): the mean
+/// shape-function gradients (1 / V) int grad N_a dV, exact with the full rule, so the
+/// forces of a constant stress cancel between neighbours on distorted meshes as well (the
+/// patch test), and the hourglass stiffness per unit shear modulus in cell dof order.
+void one_point_shape(const DoFHandler<3>::active_cell_iterator& cell, FEValues<3>& full,
+                     const std::vector<unsigned int>& dof_node,
+                     const std::vector<unsigned int>& dof_component,
+                     FarFieldSolver::Data::CellShape& shape)
+{
+  const unsigned int n_dofs = dof_node.size();
+  const unsigned int n_q = full.n_quadrature_points;
+  std::array<Eigen::Vector3d, n_vertices> nodes, mean;
+  std::vector<Eigen::Vector3d> point_gradients(std::size_t(n_q) * n_vertices);
+  std::vector<double> weights(n_q);
+  full.reinit(cell);
+  double volume = 0.0;
+  for (unsigned int q = 0; q < n_q; ++q)
+    volume += weights[q] = full.JxW(q);
+  for (unsigned int i = 0; i < n_dofs; ++i)
+    if (dof_component[i] == 0)
+    {
+      const unsigned int a = dof_node[i]; // Q1: shape function a belongs to vertex a
+      const Point<3>& x = cell->vertex(a);
+      nodes[a] = Eigen::Vector3d(x[0], x[1], x[2]);
+      mean[a].setZero();
+      for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const Tensor<1, 3> g = full.shape_grad_component(i, q, 0);
+        point_gradients[q * n_vertices + a] = Eigen::Vector3d(g[0], g[1], g[2]);
+        mean[a] += weights[q] / volume * point_gradients[q * n_vertices + a];
+      }
+    }
+  shape.gradients.assign(mean.begin(), mean.end());
+  shape.jxw.assign(1, volume);
+  const HourglassMatrix S = hourglass_stiffness(nodes.data(), mean.data(), point_gradients.data(),
+                                                weights.data(), int(n_q));
+  shape.hourglass.resize(std::size_t(n_dofs) * n_dofs);
+  for (unsigned int i = 0; i < n_dofs; ++i)
+    for (unsigned int j = 0; j < n_dofs; ++j)
+      shape.hourglass[i * n_dofs + j] =
+        S(3 * dof_node[i] + dof_component[i], 3 * dof_node[j] + dof_component[j]);
+}
 } // namespace
 
 void FarFieldSolver::Data::index_cell_shapes()
@@ -47,6 +92,14 @@ void FarFieldSolver::Data::index_cell_shapes()
   live_cell_shape.resize(live_cells.size());
   std::map<ShapeKey, unsigned int> known;
   FEValues<3> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
+  FEValues<3> full_values(mapping, fe, mass_quadrature, update_gradients | update_JxW_values);
+  const bool one_point = prm.one_point_integration;
+  hourglass_modulus = 0.0;
+  if (one_point)
+    hourglass_modulus =
+      prm.hourglass_coefficient *
+      isotropic_shear_modulus(material->tangent(Eigen::Matrix3d::Identity(),
+                                                Eigen::Vector3d::UnitX(), materials::PointState()));
   for (std::size_t c = 0; c < live_cells.size(); ++c)
   {
     const auto& cell = live_cells[c];
@@ -56,8 +109,14 @@ void FarFieldSolver::Data::index_cell_shapes()
     live_cell_shape[c] = entry->second;
     if (!is_new)
       continue;
-    fe_values.reinit(cell);
     CellShape shape;
+    if (one_point)
+    {
+      one_point_shape(cell, full_values, dof_node, dof_component, shape);
+      cell_shapes.push_back(std::move(shape));
+      continue;
+    }
+    fe_values.reinit(cell);
     shape.gradients.resize(std::size_t(n_q_points) * n_nodes);
     shape.jxw.resize(n_q_points);
     for (unsigned int q = 0; q < n_q_points; ++q)

@@ -76,7 +76,7 @@ FarFieldSolver::material_points_inside(const std::array<double, 3>& box_min,
                                        const unsigned int points_per_axis) const
 {
   const Data& d = *data;
-  AssertThrow(d.prm.degree == 1 && d.n_q_points == 8,
+  AssertThrow(d.prm.degree == 1 && (d.n_q_points == 8 || d.n_q_points == 1),
               ExcMessage("material points from a far field need linear elements"));
   // Midpoints of n x n x n sub-cells: the MPM lattice, and exact for the trilinear fields'
   // mass and momentum.
@@ -115,9 +115,11 @@ FarFieldSolver::material_points_inside(const std::array<double, 3>& box_min,
     const std::size_t first = std::size_t(cell->active_cell_index()) * d.n_q_points;
     for (unsigned int q = 0; q < lattice.size(); ++q)
     {
-      // The history of the Gauss point in the same octant (2 x 2 x 2 Gauss, x fastest).
+      // The history of the Gauss point in the same octant (2 x 2 x 2 Gauss, x fastest), or
+      // of the one point.
       const Point<3>& xi = lattice.point(q);
-      const unsigned int gauss = (xi[0] > 0.5) + 2 * (xi[1] > 0.5) + 4 * (xi[2] > 0.5);
+      const unsigned int gauss =
+        d.n_q_points == 1 ? 0 : (xi[0] > 0.5) + 2 * (xi[1] > 0.5) + 4 * (xi[2] > 0.5);
       ConvertedPoint p;
       p.reference_position = fe_values.quadrature_point(q);
       p.displacement = k.u[q];

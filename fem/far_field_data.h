@@ -81,7 +81,8 @@ struct FarFieldSolver::Data
   dealii::FESystem<3> fe;
   dealii::DoFHandler<3> dof_handler;
   dealii::MappingQ1<3> mapping;
-  dealii::QGauss<3> quadrature;
+  dealii::QGauss<3> quadrature;      ///< the law's points (one with one-point integration)
+  dealii::QGauss<3> mass_quadrature; ///< (degree + 1)^3 points: lumped and consistent mass
   dealii::QGauss<2> face_quadrature;
 
   dealii::IndexSet owned_dofs;
@@ -157,11 +158,16 @@ struct FarFieldSolver::Data
   /// are translations of each other (every vertex offset equal to 1e-10 of the cell's size)
   /// share one entry, as FEValues would reuse them: gradients[q * n_nodes + a] of the scalar
   /// shape function a (of the base element, n_nodes of them) at point q, jxw[q].
+  /// With one-point integration also the hourglass stiffness per unit shear modulus in cell
+  /// dof order (hourglass[i * n_dofs + j], fem/hourglass.h); empty otherwise.
   struct CellShape
   {
     std::vector<Eigen::Vector3d> gradients;
     std::vector<double> jxw;
+    std::vector<double> hourglass;
   };
+  /// Shear modulus times Far field/Hourglass coefficient (Pa), 0 with full integration.
+  double hourglass_modulus = 0.0;
   std::vector<CellShape> cell_shapes;
   std::vector<unsigned int> live_cell_shape; ///< by live cell: its entry of cell_shapes
   std::vector<unsigned int> dof_node;        ///< by cell dof: its scalar shape function

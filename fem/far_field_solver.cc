@@ -37,7 +37,8 @@ FarFieldSolver::Data::Data(const FeSceneParameters& parameters, const MPI_Comm c
     : prm(parameters), comm(communicator),
       material(materials::create_material(parameters.material)), triangulation(communicator),
       fe(FE_Q<3>(parameters.degree), 3), dof_handler(triangulation),
-      quadrature(parameters.degree + 1), face_quadrature(parameters.degree + 1)
+      quadrature(parameters.one_point_integration ? 1 : parameters.degree + 1),
+      mass_quadrature(parameters.degree + 1), face_quadrature(parameters.degree + 1)
 {
 }
 
@@ -319,7 +320,7 @@ void build_lumped_mass(Data& d)
 {
   const unsigned int dofs_per_cell = d.fe.n_dofs_per_cell();
   std::vector<types::global_dof_index> dofs(dofs_per_cell);
-  FEValues<3> fe_values(d.mapping, d.fe, d.quadrature, update_values | update_JxW_values);
+  FEValues<3> fe_values(d.mapping, d.fe, d.mass_quadrature, update_values | update_JxW_values);
   Vector<double> local_mass(dofs_per_cell);
   d.lumped_mass = 0.0;
   for (const auto& cell : d.dof_handler.active_cell_iterators())
@@ -328,7 +329,7 @@ void build_lumped_mass(Data& d)
       fe_values.reinit(cell);
       cell->get_dof_indices(dofs);
       local_mass = 0.0;
-      for (unsigned int q = 0; q < d.n_q_points; ++q)
+      for (unsigned int q = 0; q < d.mass_quadrature.size(); ++q)
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           local_mass(i) +=
               d.prm.density *

@@ -101,6 +101,16 @@ std::vector<ParameterProblem> check_parameters(const FeSceneParameters& p)
     }
   if (p.degree < 1 || p.degree > 2)
     add({"degree"}, std::to_string(p.degree) + " not supported", "use 1 or 2");
+  if (p.one_point_integration && p.degree != 1)
+    add({"one_point_integration", "degree"}, "one-point integration needs Q1 elements",
+        "use Element degree = 1 or Integration = full");
+  if (p.one_point_integration && p.integrator != TimeIntegrator::central_difference)
+    add({"one_point_integration", "integrator"},
+        "one-point integration is built for the explicit far field only",
+        "use Integrator = central difference or Integration = full");
+  if (!(p.hourglass_coefficient > 0.0 && p.hourglass_coefficient <= 10.0))
+    add({"hourglass_coefficient"}, number(p.hourglass_coefficient) + " outside (0, 10]",
+        "use 1 (the eight-point element's stiffness)");
   if (!(p.cfl > 0.0 && p.cfl <= 1.0))
     add({"cfl"}, number(p.cfl) + " outside (0, 1]", "use about 0.5");
   if (p.integrator != TimeIntegrator::central_difference && !(p.time_step > 0.0))

@@ -119,6 +119,12 @@ struct FeSceneParameters
   /// The law sees F_bar = (J_bar / J)^(1/3) F with the cell's mean J (fem/volume_averaged_cell.h):
   /// no volumetric locking of nearly incompressible tissue.
   bool volume_averaging = false;
+  /// Explicit Q1 only: the law at one point per cell (its centre) and hourglass forces for the
+  /// modes one point does not see (fem/hourglass.h); false: (degree + 1)^3 Gauss points.
+  bool one_point_integration = false;
+  /// Scale of the hourglass stiffness: 1 gives the eight-point F-bar element's response to
+  /// the hourglass modes for small strains of an isotropic law (exactly, on box cells).
+  double hourglass_coefficient = 1.0;
 
   TimeIntegrator integrator = TimeIntegrator::central_difference;
   double cfl = 0.5;             ///< explicit: dt = cfl * min over cells h / c

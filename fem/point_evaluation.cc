@@ -162,6 +162,22 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
         const auto row = w.P[q].row(dof_component[i]);
         f_local[i] += (row[0] * grad[0] + row[1] * grad[1] + row[2] * grad[2]) * w.JxW[q];
       }
+    if (!shape.hourglass.empty())
+    {
+      // f_hg = mu S u, stored energy u . f_hg / 2 (fem/hourglass.h).
+      double work = 0.0;
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        const double* row = &shape.hourglass[std::size_t(i) * n_dofs];
+        double f = 0.0;
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          f += row[j] * w.u_local[j];
+        f *= hourglass_modulus;
+        f_local[i] += f;
+        work += f * w.u_local[i];
+      }
+      r.strain_energy += 0.5 * work;
+    }
     cell_stress[k] = stress_sum / volume;
     cell_failure[k] = flags;
     cell_wave_speed[k] = c_max;
@@ -458,7 +474,7 @@ double FarFieldSolver::Data::kinetic_energy() const
   // Consistent mass: 1/2 int rho0 |v_h|^2 dV, evaluated at the quadrature points.
   Vector v(ghosted);
   v = velocity;
-  FEValues<3> fe_values(mapping, fe, quadrature, update_values | update_JxW_values);
+  FEValues<3> fe_values(mapping, fe, mass_quadrature, update_values | update_JxW_values);
   const unsigned int n_dofs = fe.n_dofs_per_cell();
   std::vector<types::global_dof_index> dofs(n_dofs);
   for (const auto& cell : dof_handler.active_cell_iterators())
@@ -466,7 +482,7 @@ double FarFieldSolver::Data::kinetic_energy() const
     {
       fe_values.reinit(cell);
       cell->get_dof_indices(dofs);
-      for (unsigned int q = 0; q < n_q_points; ++q)
+      for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
       {
         Tensor<1, 3> vq;
         for (unsigned int i = 0; i < n_dofs; ++i)

@@ -46,6 +46,9 @@ int main(int argc, char** argv)
         row("FE expl", ratio, averaging, cells,
             verification::fe_shear_mode(cells, ratio, averaging,
                                         fem::TimeIntegrator::central_difference));
+        row("FE 1pt", ratio, averaging, cells,
+            verification::fe_shear_mode(cells, ratio, averaging,
+                                        fem::TimeIntegrator::central_difference, true));
         row("FE Newm", ratio, averaging, cells,
             verification::fe_shear_mode(cells, ratio, averaging, fem::TimeIntegrator::newmark));
         row("MPM", ratio, averaging, cells, verification::mpm_shear_mode(cells, ratio, averaging));

@@ -105,7 +105,8 @@ ShearModeResult mpm_shear_mode(const unsigned int cells, const double bulk_over_
 }
 
 ShearModeResult fe_shear_mode(const unsigned int cells, const double bulk_over_shear,
-                              const bool averaging, const fem::TimeIntegrator integrator)
+                              const bool averaging, const fem::TimeIntegrator integrator,
+                              const bool one_point)
 {
   using namespace dealii;
   fem::FeSceneParameters p;
@@ -118,6 +119,7 @@ ShearModeResult fe_shear_mode(const unsigned int cells, const double bulk_over_s
   for (auto& face : p.faces)
     face.condition = fem::FaceParameters::Condition::roller;
   p.volume_averaging = averaging;
+  p.one_point_integration = one_point;
   p.integrator = integrator;
   p.time_step = period / 80;
   p.newton_relative_tolerance = 1e-10;

@@ -22,7 +22,8 @@ struct ShearModeResult
 ShearModeResult mpm_shear_mode(unsigned int cells, double bulk_over_shear, bool averaging);
 
 /// The FE far field (Q1, one cell thick), explicit at its CFL or Newmark at T/80; with or
-/// without the mean-dilatation F-bar.
+/// without the mean-dilatation F-bar; one_point: one point per cell with hourglass control
+/// (explicit only).
 ShearModeResult fe_shear_mode(unsigned int cells, double bulk_over_shear, bool averaging,
-                              fem::TimeIntegrator integrator);
+                              fem::TimeIntegrator integrator, bool one_point = false);
 } // namespace vulnus::verification
