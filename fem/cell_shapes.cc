@@ -77,6 +77,27 @@ void one_point_shape(const DoFHandler<3>::active_cell_iterator& cell, FEValues<3
       shape.hourglass[i * n_dofs + j] =
         S(3 * dof_node[i] + dof_component[i], 3 * dof_node[j] + dof_component[j]);
 }
+/// The full rule's gradients and JxW at every point of the cell.
+void full_rule_shape(const DoFHandler<3>::active_cell_iterator& cell, FEValues<3>& fe_values,
+                     const std::vector<unsigned int>& dof_node,
+                     const std::vector<unsigned int>& dof_component, const unsigned int n_nodes,
+                     FarFieldSolver::Data::CellShape& shape)
+{
+  const unsigned int n_q = fe_values.n_quadrature_points;
+  fe_values.reinit(cell);
+  shape.gradients.resize(std::size_t(n_q) * n_nodes);
+  shape.jxw.resize(n_q);
+  for (unsigned int q = 0; q < n_q; ++q)
+  {
+    shape.jxw[q] = fe_values.JxW(q);
+    for (unsigned int i = 0; i < dof_node.size(); ++i)
+      if (dof_component[i] == 0)
+      {
+        const Tensor<1, 3> g = fe_values.shape_grad_component(i, q, 0);
+        shape.gradients[q * n_nodes + dof_node[i]] = Eigen::Vector3d(g[0], g[1], g[2]);
+      }
+  }
+}
 } // namespace
 
 void FarFieldSolver::Data::index_cell_shapes()
@@ -91,9 +112,10 @@ void FarFieldSolver::Data::index_cell_shapes()
   cell_shapes.clear();
   live_cell_shape.resize(live_cells.size());
   std::map<ShapeKey, unsigned int> known;
-  FEValues<3> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
-  FEValues<3> full_values(mapping, fe, mass_quadrature, update_gradients | update_JxW_values);
   const bool one_point = prm.one_point_integration;
+  // One point takes its mean gradients and hourglass stiffness from the full rule.
+  FEValues<3> fe_values(mapping, fe, one_point ? mass_quadrature : quadrature,
+                        update_gradients | update_JxW_values);
   hourglass_modulus = 0.0;
   if (one_point)
     hourglass_modulus =
@@ -111,24 +133,9 @@ void FarFieldSolver::Data::index_cell_shapes()
       continue;
     CellShape shape;
     if (one_point)
-    {
-      one_point_shape(cell, full_values, dof_node, dof_component, shape);
-      cell_shapes.push_back(std::move(shape));
-      continue;
-    }
-    fe_values.reinit(cell);
-    shape.gradients.resize(std::size_t(n_q_points) * n_nodes);
-    shape.jxw.resize(n_q_points);
-    for (unsigned int q = 0; q < n_q_points; ++q)
-    {
-      shape.jxw[q] = fe_values.JxW(q);
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        if (dof_component[i] == 0)
-        {
-          const Tensor<1, 3> g = fe_values.shape_grad_component(i, q, 0);
-          shape.gradients[q * n_nodes + dof_node[i]] = Eigen::Vector3d(g[0], g[1], g[2]);
-        }
-    }
+      one_point_shape(cell, fe_values, dof_node, dof_component, shape);
+    else
+      full_rule_shape(cell, fe_values, dof_node, dof_component, n_nodes, shape);
     cell_shapes.push_back(std::move(shape));
   }
 }

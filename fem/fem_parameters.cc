@@ -136,6 +136,12 @@ std::vector<ParameterProblem> check_parameters(const FeSceneParameters& p)
   return problems;
 }
 
+const char* integration_description(const FeSceneParameters& parameters)
+{
+  return parameters.one_point_integration ? "one point per cell with hourglass control"
+                                          : "full Gauss integration";
+}
+
 void require_valid(const FeSceneParameters& parameters)
 {
   const std::vector<ParameterProblem> problems = check_parameters(parameters);

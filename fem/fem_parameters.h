@@ -172,6 +172,9 @@ struct FeSceneParameters
 /// ("cfl", "slab_min", ...; "faces.profile.duration" for a loaded face's profile).
 std::vector<ParameterProblem> check_parameters(const FeSceneParameters& parameters);
 
+/// How the elements are integrated, for logs and summaries.
+const char* integration_description(const FeSceneParameters& parameters);
+
 /// Throws std::invalid_argument listing check_parameters' problems, if there are any.
 void require_valid(const FeSceneParameters& parameters);
 } // namespace vulnus::fem

@@ -42,6 +42,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
 
   const materials::FailureParameters* criterion = proximity_criterion();
   const bool fibers = material->uses_fibers();
+  const bool average_volume = prm.volume_averaging && n_q_points > 1;
   internal_force_raw = 0.0;
   if (cell_local_dofs.empty())
     index_cell_dofs(u_ghosted);
@@ -107,11 +108,12 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
         F.row(dof_component[i]) += w.u_local[i] * grads[q * n_nodes + dof_node[i]].transpose();
       w.JxW[q] = shape.jxw[q];
     }
-    // The law sees F, or F_bar with the cell's mean dilatation (fem/volume_averaged_cell.h).
+    // The law sees F, or F_bar with the cell's mean dilatation (fem/volume_averaged_cell.h);
+    // one point is its own cell mean.
     double j_bar = 0.0;
     try
     {
-      if (prm.volume_averaging)
+      if (average_volume)
         j_bar = volume_averaged_gradients(n_q_points, w.F.data(), w.JxW.data(), w.F_law.data());
       else
         std::copy_n(w.F.begin(), n_q_points, w.F_law.begin());
@@ -138,7 +140,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       }
       const double J = F_law.determinant();
       w.sigma[q] = w.response.cauchy_stress;
-      if (!prm.volume_averaging)
+      if (!average_volume)
         w.P[q] = J * w.sigma[q] * F_law.inverse().transpose();
       const double JxW = w.JxW[q];
       r.strain_energy += w.response.energy_density * JxW;
@@ -152,7 +154,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
                                                           fibers ? &fiber_directions[first + q]
                                                                  : nullptr));
     }
-    if (prm.volume_averaging)
+    if (average_volume)
       volume_averaged_stresses(n_q_points, w.F.data(), w.JxW.data(), w.sigma.data(), j_bar,
                                w.P.data());
     for (unsigned int q = 0; q < n_q_points; ++q)

@@ -51,8 +51,8 @@ void FeStepper::log_scene(io::RunDirectory& directory) const
   const unsigned long long n_points = solver->n_quadrature_points(); // collective
   std::ostringstream o;
   o << "FE scene: " << solver->n_active_cells() << " cells, " << solver->n_dofs() << " dofs, "
-    << n_points << " quadrature points, Q" << parameters.degree
-    << (parameters.one_point_integration ? " (one point per cell, hourglass control)" : "") << ", "
+    << n_points << " quadrature points, Q" << parameters.degree << " ("
+    << fem::integration_description(parameters) << "), "
     << dealii::Utilities::MPI::n_mpi_processes(solver->communicator()) << " MPI rank(s)";
   directory.log(o.str());
 }

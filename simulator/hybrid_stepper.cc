@@ -34,12 +34,6 @@ const char* integrator_name(const fem::TimeIntegrator i)
   }
   return "?";
 }
-
-const char* integration_name(const fem::FeSceneParameters& fe)
-{
-  return fe.one_point_integration ? "one point per cell with hourglass control"
-                                  : "full Gauss integration";
-}
 } // namespace
 
 HybridStepper::HybridStepper(const deck::RunParameters& parameters, const MPI_Comm communicator)
@@ -62,7 +56,7 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
     << split.hybrid.zone_max[1] << ", " << split.hybrid.zone_max[2] << ") m: "
     << n_points << " points; FE far field: " << solver.fe().n_active_cells()
     << " cells, " << solver.fe().n_dofs() << " dofs, " << integrator_name(split.fe.integrator)
-    << ", " << integration_name(split.fe) << "; " << solver.n_interface_nodes() << " shared interface nodes, scheme "
+    << ", " << fem::integration_description(split.fe) << "; " << solver.n_interface_nodes() << " shared interface nodes, scheme "
     << scheme_name(split.hybrid.scheme) << ", " << omp_get_max_threads() << " thread(s)";
   if (split.hybrid.adaptive.enabled)
     o << "; adaptive zone: cells convert at " << split.hybrid.adaptive.threshold
@@ -258,7 +252,7 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
     analysis::relative_balance_error(energy, initial_energy);
   summary["hybrid"] = {{"scheme", scheme_name(split.hybrid.scheme)},
                        {"fe_integrator", integrator_name(split.fe.integrator)},
-                       {"fe_integration", integration_name(split.fe)},
+                       {"fe_integration", fem::integration_description(split.fe)},
                        {"mpm_steps", ledger.mpm_steps},
                        {"fe_steps", ledger.fe_steps},
                        {"fe_time_s", solver.fe().time()},
