@@ -36,6 +36,14 @@ void declare_far_field_section(EntryTable& table)
   table.declare("Hourglass coefficient", "1", Patterns::Double(0.0, 10.0),
                 "One-point integration: scale of the hourglass stiffness, in (0, 10]; 1 is the "
                 "full element's response to the hourglass modes at small strain.");
+  table.declare("Shock viscosity", "false", Patterns::Bool(),
+                "Explicit far field: true gives its cells the bulk viscosity of Time/Artificial "
+                "viscosity linear and quadratic, with h the cell's size, as the MPM points have "
+                "it (for shocks that reach the far field). false (default): none; the far "
+                "field carries elastic waves, and the linear term damps the target's ringing "
+                "by an amount of order h that a refined run does not have (docs/far_field.md "
+                "section 11). The implicit integrators have none (their damping is the "
+                "spectral radius).");
   table.declare("CFL", "0.5", Patterns::Double(0.0, 1.0),
                 "Explicit: Courant number in dt = CFL h_min / c over the cells, in (0, 1].");
   table.declare("Time step", "1e-5", Patterns::Double(0.0),
@@ -97,6 +105,9 @@ void parse_far_field_section(dealii::ParameterHandler& prm, RunParameters& param
     (integration == "automatic" && f.integrator == fem::TimeIntegrator::central_difference &&
      f.degree == 1);
   f.hourglass_coefficient = prm.get_double("Hourglass coefficient");
+  if (prm.get_bool("Shock viscosity") && f.integrator == fem::TimeIntegrator::central_difference)
+    f.shock_viscosity = {parameters.scene.artificial_viscosity_linear,
+                         parameters.scene.artificial_viscosity_quadratic};
   f.cfl = prm.get_double("CFL");
   f.time_step = prm.get_double("Time step");
   f.spectral_radius = prm.get_double("Spectral radius");

@@ -18,9 +18,14 @@ void FarFieldSolver::evaluate_explicit_forces(const double t)
 {
   Data& d = *data;
   d.ghosted = d.displacement;
+  // Not at set-up (no step yet): the initial velocities are set after it.
+  const bool viscous = d.prm.shock_viscosity.active() && d.material_time_step > 0.0;
+  if (viscous)
+    d.ghosted_velocity = d.velocity; // v_{n+1/2} after the first half kick
   d.residual = 0.0;
   const auto start = std::chrono::steady_clock::now();
-  const EvaluationSums sums = d.evaluate_internal_forces(d.ghosted, &d.residual);
+  const EvaluationSums sums =
+    d.evaluate_internal_forces(d.ghosted, &d.residual, viscous ? &d.ghosted_velocity : nullptr);
   d.phase_times.internal_forces +=
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   d.assemble_external_forces(t, &d.residual);

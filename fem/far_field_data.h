@@ -110,8 +110,9 @@ struct FarFieldSolver::Data
   /// (zero for the explicit lumped mass).
   Vector inertia_coupling_raw;
   Vector residual; ///< explicit: condensed f_ext - f_int
-  // Ghosted copy for cell loops.
-  Vector ghosted;
+  // Ghosted copies for cell loops: the displacement, and the explicit step's velocity for the
+  // shock viscosity.
+  Vector ghosted, ghosted_velocity;
 
   unsigned int n_q_points = 0;
   std::vector<materials::PointState> committed_states;
@@ -245,9 +246,11 @@ struct FarFieldSolver::Data
   /// threads: updates the trial states from the committed ones, the cell stress, failure, wave
   /// speed and failure proximity, and adds
   /// f_int to internal_force_raw (zeroed first) and, when condensed is non-null, -f_int to
-  /// *condensed through the hanging-node constraints. Throws (on all ranks) when an element
-  /// inverts.
-  EvaluationSums evaluate_internal_forces(const Vector& u_ghosted, Vector* condensed);
+  /// *condensed through the hanging-node constraints. With a velocity (ghosted) the stress
+  /// carries prm.shock_viscosity at the rate of the law's volume change, and its work over
+  /// material_time_step is booked as dissipated. Throws (on all ranks) when an element inverts.
+  EvaluationSums evaluate_internal_forces(const Vector& u_ghosted, Vector* condensed,
+                                          const Vector* v_ghosted = nullptr);
   /// The failure criterion whose proximity the cells track, or null when none is tracked.
   const materials::FailureParameters* proximity_criterion() const;
   /// Makes the trial states the committed ones; counts failed points and warns loudly.

@@ -277,6 +277,7 @@ void allocate_vectors(Data& d)
         &d.internal_force_raw, &d.external_force_raw, &d.inertia_coupling_raw, &d.residual})
     v->reinit(d.owned_dofs, d.comm);
   d.ghosted.reinit(d.owned_dofs, d.relevant_dofs, d.comm);
+  d.ghosted_velocity.reinit(d.ghosted);
   d.cell_local_dofs.clear(); // indices into the old layout
 }
 

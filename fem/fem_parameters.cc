@@ -111,6 +111,8 @@ std::vector<ParameterProblem> check_parameters(const FeSceneParameters& p)
   if (!(p.hourglass_coefficient > 0.0 && p.hourglass_coefficient <= 10.0))
     add({"hourglass_coefficient"}, number(p.hourglass_coefficient) + " outside (0, 10]",
         "use 1 (the eight-point element's stiffness)");
+  if (!(p.shock_viscosity.linear >= 0.0 && p.shock_viscosity.quadratic >= 0.0))
+    add({"shock_viscosity"}, "coefficients must not be negative", "use 0.06 and 1.5, or 0");
   if (!(p.cfl > 0.0 && p.cfl <= 1.0))
     add({"cfl"}, number(p.cfl) + " outside (0, 1]", "use about 0.5");
   if (p.integrator != TimeIntegrator::central_difference && !(p.time_step > 0.0))
@@ -140,6 +142,16 @@ const char* integration_description(const FeSceneParameters& parameters)
 {
   return parameters.one_point_integration ? "one point per cell with hourglass control"
                                           : "full Gauss integration";
+}
+
+std::string shock_viscosity_description(const FeSceneParameters& parameters)
+{
+  if (!parameters.shock_viscosity.active())
+    return "no shock viscosity";
+  std::ostringstream o;
+  o << "shock viscosity " << parameters.shock_viscosity.linear << " / "
+    << parameters.shock_viscosity.quadratic;
+  return o.str();
 }
 
 void require_valid(const FeSceneParameters& parameters)

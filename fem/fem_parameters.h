@@ -7,6 +7,7 @@
 
 #include "materials/fiber_field.h"
 #include "materials/material_parameters.h"
+#include "materials/shock_viscosity.h"
 
 #include <array>
 #include <string>
@@ -125,6 +126,9 @@ struct FeSceneParameters
   /// Scale of the hourglass stiffness: 1 gives the eight-point F-bar element's response to
   /// the hourglass modes for small strains of an isotropic law (exactly, on box cells).
   double hourglass_coefficient = 1.0;
+  /// Explicit only: the bulk viscosity of the MPM points (materials/shock_viscosity.h) in the
+  /// cells, h the cell's size; the implicit integrators ignore it. Off by default.
+  materials::ShockViscosity shock_viscosity;
 
   TimeIntegrator integrator = TimeIntegrator::central_difference;
   double cfl = 0.5;             ///< explicit: dt = cfl * min over cells h / c
@@ -174,6 +178,8 @@ std::vector<ParameterProblem> check_parameters(const FeSceneParameters& paramete
 
 /// How the elements are integrated, for logs and summaries.
 const char* integration_description(const FeSceneParameters& parameters);
+/// The explicit cells' shock viscosity ("shock viscosity q1 / q2" or "no shock viscosity").
+std::string shock_viscosity_description(const FeSceneParameters& parameters);
 
 /// Throws std::invalid_argument listing check_parameters' problems, if there are any.
 void require_valid(const FeSceneParameters& parameters);

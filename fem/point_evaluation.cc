@@ -1,6 +1,7 @@
 // Quadrature-point work of the far field: deformation gradients, material updates with the
-// per-point history, internal forces f_int = int P : grad N dV, cell stress, failure and wave
-// speed; external forces (tractions, interface forces); energies and external power.
+// per-point history, the explicit step's shock viscosity, internal forces f_int = int P : grad
+// N dV, cell stress, failure and wave speed; external forces (tractions, interface forces);
+// energies and external power.
 #include "fem/far_field_data.h"
 #include "fem/tensor_conversion.h"
 #include "fem/volume_averaged_cell.h"
@@ -35,7 +36,8 @@ struct CellForces
 } // namespace
 
 EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_ghosted,
-                                                              Vector* condensed)
+                                                              Vector* condensed,
+                                                              const Vector* v_ghosted)
 {
   const unsigned int n_dofs = fe.n_dofs_per_cell();
   const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
@@ -47,6 +49,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   if (cell_local_dofs.empty())
     index_cell_dofs(u_ghosted);
   const double* u_values = u_ghosted.trilinos_vector()[0];
+  const double* v_values = v_ghosted != nullptr ? v_ghosted->trilinos_vector()[0] : nullptr;
   const long n_live = static_cast<long>(live_cells.size());
   std::vector<CellForces> results(live_cells.size());
   cell_force_values.resize(live_cells.size() * n_dofs);
@@ -57,10 +60,11 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
 
   struct Scratch
   {
-    std::vector<double> u_local;
+    std::vector<double> u_local, v_local;
     materials::PointResponse response;
     std::vector<Eigen::Matrix3d> F, F_law, sigma, P;
     std::vector<double> JxW;
+    std::vector<double> volume_rate; ///< d ln J / dt of the law's J, per point
   };
   // Records the failure of live cell c: the first in cell order is reported.
   auto record_failure = [&](const long c, const std::string& what, std::exception_ptr error)
@@ -74,6 +78,25 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
                 std::to_string(x[1]) + " " + std::to_string(x[2]) + " m";
       unexpected = error;
     }
+  };
+  // The rate of the law's volume change at each point, d ln J / dt = tr(F_dot F^-1), or with
+  // the cell's mean J that of J_bar, sum J tr(L) JxW / sum J JxW (needs w.F, w.JxW, w.v_local).
+  auto volume_rates = [&](const CellShape& shape, Scratch& w, const bool cell_mean)
+  {
+    double rate_volume = 0.0, volume = 0.0;
+    for (unsigned int q = 0; q < n_q_points; ++q)
+    {
+      Eigen::Matrix3d F_dot = Eigen::Matrix3d::Zero();
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        F_dot.row(dof_component[i]) +=
+          w.v_local[i] * shape.gradients[q * n_nodes + dof_node[i]].transpose();
+      w.volume_rate[q] = (F_dot * w.F[q].inverse()).trace();
+      const double current_volume = w.F[q].determinant() * w.JxW[q];
+      rate_volume += w.volume_rate[q] * current_volume;
+      volume += current_volume;
+    }
+    if (cell_mean)
+      std::fill(w.volume_rate.begin(), w.volume_rate.end(), rate_volume / volume);
   };
   // One live cell's forces, energies, stress, failure, wave speed and failure proximity.
   enum class Outcome { evaluated, quiet, failed };
@@ -123,6 +146,12 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       record_failure(c, e.what(), nullptr);
       return Outcome::failed;
     }
+    if (v_values != nullptr)
+    {
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        w.v_local[i] = v_values[local[i]];
+      volume_rates(shape, w, average_volume);
+    }
     for (unsigned int q = 0; q < n_q_points; ++q)
     {
       const Eigen::Matrix3d& F_law = w.F_law[q];
@@ -140,6 +169,16 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       }
       const double J = F_law.determinant();
       w.sigma[q] = w.response.cauchy_stress;
+      double wave_speed = std::sqrt(w.response.p_wave_modulus * J / prm.density);
+      if (v_values != nullptr)
+        if (const double q_visc = prm.shock_viscosity.pressure(
+              prm.density / J, wave_speed, cell_size[k], w.volume_rate[q]);
+            q_visc > 0.0)
+        {
+          w.sigma[q].diagonal().array() -= q_visc;
+          r.dissipated += q_visc * -w.volume_rate[q] * J * material_time_step * w.JxW[q];
+          wave_speed += std::sqrt(q_visc * J / prm.density);
+        }
       if (!average_volume)
         w.P[q] = J * w.sigma[q] * F_law.inverse().transpose();
       const double JxW = w.JxW[q];
@@ -147,7 +186,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       r.dissipated += w.response.dissipated_density * JxW;
       stress_sum += JxW * to_dealii(w.sigma[q]);
       volume += JxW;
-      c_max = std::max(c_max, std::sqrt(w.response.p_wave_modulus * J / prm.density));
+      c_max = std::max(c_max, wave_speed);
       flags |= state.failure;
       if (criterion != nullptr)
         proximity = std::max(proximity, failure_proximity(*criterion, F_law,
@@ -195,6 +234,8 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
   {
     Scratch w;
     w.u_local.resize(n_dofs);
+    w.v_local.resize(n_dofs);
+    w.volume_rate.resize(n_q_points);
     for (auto* v : {&w.F, &w.F_law, &w.sigma, &w.P})
       v->resize(n_q_points);
     w.JxW.resize(n_q_points);

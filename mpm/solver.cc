@@ -99,8 +99,8 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   kinematics.rigid_velocity = grid_settings.rigid_velocity;
 
   stress_settings.cell_size = scene.cell_size;
-  stress_settings.viscosity_linear = scene.artificial_viscosity_linear;
-  stress_settings.viscosity_quadratic = scene.artificial_viscosity_quadratic;
+  stress_settings.viscosity = {scene.artificial_viscosity_linear,
+                               scene.artificial_viscosity_quadratic};
   stress_settings.body_material = materials_of_body;
   for (const BodyParameters& body : scene.bodies)
     stress_settings.body_density.push_back(body.density);

@@ -40,11 +40,9 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
     Tensor2 sigma = r.cauchy_stress;
     double dissipated = r.dissipated_density;
     const double rate = volumetric_rate ? volumetric_rate[p] : 0.0;
-    if (rate < 0.0)
+    if (const double q = s.viscosity.pressure(current_density, wave_speed, s.cell_size, rate);
+        q > 0.0)
     {
-      const double h = s.cell_size;
-      const double q = current_density * (s.viscosity_linear * wave_speed * h * -rate +
-                                           s.viscosity_quadratic * h * h * rate * rate);
       sigma.diagonal().array() -= q;
       const double viscous_density = q * -rate * J * s.time_step;
       dissipated += viscous_density;

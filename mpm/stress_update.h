@@ -4,6 +4,7 @@
 #pragma once
 
 #include "materials/material.h"
+#include "materials/shock_viscosity.h"
 #include "mpm/particles.h"
 
 #include <vector>
@@ -15,9 +16,8 @@ struct StressUpdateSettings
   double time_step = 0.0;
   double cell_size = 0.0;
   /// Bulk viscosity q = rho (linear c h |tr D| + quadratic h^2 tr(D)^2) in compression.
-  double viscosity_linear = 0.0;
-  double viscosity_quadratic = 0.0;
-  bool uses_viscosity() const { return viscosity_linear > 0.0 || viscosity_quadratic > 0.0; }
+  materials::ShockViscosity viscosity;
+  bool uses_viscosity() const { return viscosity.active(); }
   std::vector<const materials::Material*> body_material;
   std::vector<double> body_density; ///< reference density per body, kg/m^3
   /// Per body, 1 when another stepper updates its points (a subcycled projectile). Empty: none.

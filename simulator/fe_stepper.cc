@@ -52,7 +52,8 @@ void FeStepper::log_scene(io::RunDirectory& directory) const
   std::ostringstream o;
   o << "FE scene: " << solver->n_active_cells() << " cells, " << solver->n_dofs() << " dofs, "
     << n_points << " quadrature points, Q" << parameters.degree << " ("
-    << fem::integration_description(parameters) << "), "
+    << fem::integration_description(parameters) << ", "
+    << fem::shock_viscosity_description(parameters) << "), "
     << dealii::Utilities::MPI::n_mpi_processes(solver->communicator()) << " MPI rank(s)";
   directory.log(o.str());
 }
@@ -85,12 +86,16 @@ std::vector<std::string> FeStepper::history_columns() const
   return {"time_s",       "dt_s",       "step",       "kinetic_J",
           "strain_J",     "dissipated_material_J",    "external_work_J",
           "energy_balance_error",       "momentum_x", "momentum_y",
-          "momentum_z",   "failed_points"};
+          "momentum_z",   "failed_points",
+          "support_impulse_x-", "support_impulse_x+", "support_impulse_y-",
+          "support_impulse_y+", "support_impulse_z-", "support_impulse_z+"};
 }
 
 std::vector<double> FeStepper::history_row() const
 {
   const fem::FeDiagnostics d = solver->diagnostics(); // collective
+  // Each face's impulse along its own normal axis (N s), as in the MPM and hybrid histories.
+  const auto normal = [&d](const unsigned int f) { return d.support_impulses[f][f / 2]; };
   return {d.time,
           dt,
           double(d.step),
@@ -102,7 +107,8 @@ std::vector<double> FeStepper::history_row() const
           d.momentum[0],
           d.momentum[1],
           d.momentum[2],
-          double(d.n_failed_points)};
+          double(d.n_failed_points),
+          normal(0), normal(1), normal(2), normal(3), normal(4), normal(5)};
 }
 
 std::vector<std::string> FeStepper::final_warnings() const

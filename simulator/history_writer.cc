@@ -1,6 +1,11 @@
 // history.csv, fresh or resumed.
 #include "simulator/history_writer.h"
 
+#include "analysis/late_window.h"
+#include "io/csv_columns.h"
+
+#include <algorithm>
+
 namespace vulnus::simulator
 {
 HistoryWriter::HistoryWriter(io::RunDirectory& directory, const unsigned int history_interval)
@@ -48,6 +53,28 @@ void HistoryWriter::flush()
 {
   if (history)
     history->flush();
+}
+
+void HistoryWriter::add_to_summary(nlohmann::json& summary) const
+{
+  if (!history || !summary.contains("supports"))
+    return;
+  history->flush();
+  const std::vector<std::string>& columns = history->columns();
+  for (auto& [face, record] : summary["supports"].items())
+  {
+    const std::string column = "support_impulse_" + face;
+    if (std::find(columns.begin(), columns.end(), column) == columns.end())
+      continue;
+    const std::vector<std::vector<double>> series =
+      io::read_csv_columns(history->path(), {"time_s", column});
+    if (series[0].size() < 2 || !(series[0].back() > series[0].front()))
+      continue;
+    const analysis::LateWindow late = analysis::late_window(series[0], series[1]);
+    record["normal_impulse_late_mean_N_s"] = late.mean;
+    record["normal_impulse_late_range_N_s"] = {late.min, late.max};
+    summary["supports_late_window_s"] = {late.from_time, late.to_time};
+  }
 }
 
 void HistoryWriter::save_progress(io::RunProgress& progress) const

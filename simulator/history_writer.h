@@ -1,5 +1,6 @@
 // The CSV time history (history.csv) of every run type: a row of the stepper's columns at
 // the start, every `history_interval` steps and at the end (unless that step has its row).
+// At the end it reads the supports' impulses back for their late mean and range.
 #pragma once
 
 #include "io/csv_history.h"
@@ -23,6 +24,10 @@ public:
   void finish(Stepper& stepper) override;
   void flush() override;
   void save_progress(io::RunProgress& progress) const override;
+  /// Into each face of summary["supports"] that history.csv has a support_impulse column
+  /// for: the mean and range of that (normal) impulse over the second half of the run
+  /// (analysis/late_window.h), phase-independent figures of a ringing reaction.
+  void add_to_summary(nlohmann::json& summary) const override;
 
 private:
   void add_row(const Stepper& stepper);

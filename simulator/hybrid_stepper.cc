@@ -56,7 +56,9 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
     << split.hybrid.zone_max[1] << ", " << split.hybrid.zone_max[2] << ") m: "
     << n_points << " points; FE far field: " << solver.fe().n_active_cells()
     << " cells, " << solver.fe().n_dofs() << " dofs, " << integrator_name(split.fe.integrator)
-    << ", " << fem::integration_description(split.fe) << "; " << solver.n_interface_nodes() << " shared interface nodes, scheme "
+    << ", " << fem::integration_description(split.fe) << ", "
+    << fem::shock_viscosity_description(split.fe) << "; " << solver.n_interface_nodes()
+    << " shared interface nodes, scheme "
     << scheme_name(split.hybrid.scheme) << ", " << omp_get_max_threads() << " thread(s)";
   if (split.hybrid.adaptive.enabled)
     o << "; adaptive zone: cells convert at " << split.hybrid.adaptive.threshold
@@ -253,6 +255,8 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
   summary["hybrid"] = {{"scheme", scheme_name(split.hybrid.scheme)},
                        {"fe_integrator", integrator_name(split.fe.integrator)},
                        {"fe_integration", fem::integration_description(split.fe)},
+                       {"fe_shock_viscosity", {split.fe.shock_viscosity.linear,
+                                               split.fe.shock_viscosity.quadratic}},
                        {"mpm_steps", ledger.mpm_steps},
                        {"fe_steps", ledger.fe_steps},
                        {"fe_time_s", solver.fe().time()},

@@ -28,9 +28,25 @@ double relative(const double a, const double b) { return std::abs(b - a) / std::
 
 /// The momentum audit closes (bodies now + removed = initial + supports + external, to 1e-6
 /// of the momentum that flowed), and `supports` holds each face's whole reaction: for a hybrid
-/// run the MPM and far-field shares it lists in "hybrid".
+/// run the MPM and far-field shares it lists in "hybrid". Each face's late range, read back
+/// from history.csv, holds its impulse at the end along the face's normal (the same face and
+/// axis) and its late mean.
 void expect_momentum_audit_closes(const nlohmann::json& summary)
 {
+  for (const auto& face : summary["supports"].items())
+  {
+    ASSERT_TRUE(face.value().contains("normal_impulse_late_range_N_s")) << face.key();
+    const int axis = face.key()[0] - 'x';
+    const double end = face.value()["impulse_N_s"][axis].get<double>();
+    const double mean = face.value()["normal_impulse_late_mean_N_s"].get<double>();
+    const double lo = face.value()["normal_impulse_late_range_N_s"][0].get<double>();
+    const double hi = face.value()["normal_impulse_late_range_N_s"][1].get<double>();
+    const double slack = 1e-9 * std::max(std::abs(lo), std::abs(hi)); // 12 digits in the CSV
+    EXPECT_LE(lo - slack, end) << face.key();
+    EXPECT_GE(hi + slack, end) << face.key();
+    EXPECT_LE(lo - slack, mean) << face.key();
+    EXPECT_GE(hi + slack, mean) << face.key();
+  }
   const nlohmann::json& audit = summary["momentum_audit"];
   ASSERT_TRUE(audit.is_object()) << summary.dump();
   EXPECT_TRUE(audit["closes"].get<bool>()) << audit.dump();
