@@ -59,18 +59,26 @@ void HistoryWriter::add_to_summary(nlohmann::json& summary) const
 {
   if (!history || !summary.contains("supports"))
     return;
-  history->flush();
   const std::vector<std::string>& columns = history->columns();
-  for (auto& [face, record] : summary["supports"].items())
+  std::vector<std::string> faces, wanted{"time_s"};
+  for (const auto& face : summary["supports"].items())
+    if (const std::string column = "support_impulse_" + face.key();
+        std::find(columns.begin(), columns.end(), column) != columns.end())
+    {
+      faces.push_back(face.key());
+      wanted.push_back(column);
+    }
+  if (faces.empty())
+    return;
+  history->flush();
+  const std::vector<std::vector<double>> series = io::read_csv_columns(history->path(), wanted);
+  const std::vector<double>& times = series[0];
+  if (times.size() < 2 || !(times.back() > times.front()))
+    return;
+  for (std::size_t f = 0; f < faces.size(); ++f)
   {
-    const std::string column = "support_impulse_" + face;
-    if (std::find(columns.begin(), columns.end(), column) == columns.end())
-      continue;
-    const std::vector<std::vector<double>> series =
-      io::read_csv_columns(history->path(), {"time_s", column});
-    if (series[0].size() < 2 || !(series[0].back() > series[0].front()))
-      continue;
-    const analysis::LateWindow late = analysis::late_window(series[0], series[1]);
+    const analysis::LateWindow late = analysis::late_window(times, series[f + 1]);
+    nlohmann::json& record = summary["supports"][faces[f]];
     record["normal_impulse_late_mean_N_s"] = late.mean;
     record["normal_impulse_late_range_N_s"] = {late.min, late.max};
     summary["supports_late_window_s"] = {late.from_time, late.to_time};
