@@ -61,9 +61,10 @@ void declare_far_field_section(EntryTable& table)
                 "Implicit: relative residual tolerance of Newton's method.");
   table.declare("Maximum Newton iterations", "25", Patterns::Integer(1, 1000),
                 "Implicit: Newton iterations before the step is declared failed.");
-  table.declare("Linear solver", "cg", Patterns::Selection("cg|gmres"),
-                "Implicit: Krylov solver of the Newton systems (algebraic multigrid "
-                "preconditioner).");
+  table.declare("Linear solver", "cg", Patterns::Selection("cg|gmres|direct"),
+                "Implicit: solver of the Newton systems: a Krylov solver (cg, gmres) with an "
+                "algebraic multigrid preconditioner, or direct (sparse LU by MUMPS, one "
+                "factorization per Newton correction; its memory grows faster than the dofs).");
   table.declare("Linear tolerance", "1e-10", Patterns::Double(0.0, 1.0),
                 "Implicit: relative tolerance of the Krylov solver.");
   table.declare("Maximum linear iterations", "2000", Patterns::Integer(1, 1000000),
@@ -72,6 +73,12 @@ void declare_far_field_section(EntryTable& table)
                 "Implicit: keep the multigrid hierarchy between Newton solves while the step "
                 "length holds and the Krylov iterations stay below twice (+10) those after "
                 "its set-up; false rebuilds it for every solve.");
+  table.declare("Interface stiffness solver", "automatic",
+                Patterns::Selection("automatic|direct|iterative"),
+                "Implicit hybrid: how the window's effective interface mass is probed. direct: "
+                "one sparse LU factorization (MUMPS) of the held Newton matrix serves every "
+                "probe; iterative: a multigrid-preconditioned CG solve per probe; automatic: "
+                "direct up to 150,000 far-field dofs (docs/far_field.md section 8).");
   table.declare("Load face", "none", Patterns::Selection("none|x-|x+|y-|y+|z-|z+"),
                 "Pure-FE scenes: a slab face carrying a prescribed velocity or traction.");
   table.declare("Load kind", "velocity", Patterns::Selection("velocity|traction"),
@@ -115,10 +122,18 @@ void parse_far_field_section(dealii::ParameterHandler& prm, RunParameters& param
   f.grading_ratio = prm.get_double("Grading ratio");
   f.newton_relative_tolerance = prm.get_double("Newton tolerance");
   f.max_newton_iterations = static_cast<unsigned int>(prm.get_integer("Maximum Newton iterations"));
-  f.linear_solver =
-    prm.get("Linear solver") == "gmres" ? fem::LinearSolverType::gmres : fem::LinearSolverType::cg;
+  const std::string linear_solver = prm.get("Linear solver");
+  f.linear_solver = linear_solver == "gmres"    ? fem::LinearSolverType::gmres
+                    : linear_solver == "direct" ? fem::LinearSolverType::direct
+                                                : fem::LinearSolverType::cg;
   f.linear_relative_tolerance = prm.get_double("Linear tolerance");
   f.reuse_preconditioner = prm.get_bool("Reuse preconditioner");
+  const std::string stiffness_solver = prm.get("Interface stiffness solver");
+  f.interface_stiffness_solver = stiffness_solver == "direct"
+                                   ? fem::InterfaceStiffnessSolver::direct
+                                 : stiffness_solver == "iterative"
+                                   ? fem::InterfaceStiffnessSolver::iterative
+                                   : fem::InterfaceStiffnessSolver::automatic;
   f.max_linear_iterations =
     static_cast<unsigned int>(prm.get_integer("Maximum linear iterations"));
   const std::string face = prm.get("Load face");

@@ -72,10 +72,21 @@ enum class TimeIntegrator
   generalized_alpha   ///< implicit Chung-Hulbert 1993 with spectral radius rho_inf
 };
 
+/// How the implicit interface stiffness's probing solves are done: one sparse direct
+/// factorization of the held Newton matrix serving every probe, or a multigrid-preconditioned
+/// CG solve per probe; automatic takes the direct one up to 150,000 far-field dofs.
+enum class InterfaceStiffnessSolver
+{
+  automatic,
+  direct,
+  iterative
+};
+
 enum class LinearSolverType
 {
   cg,
-  gmres
+  gmres,
+  direct ///< sparse LU (MUMPS), factorized for every Newton correction
 };
 
 /// Face order of FeSceneParameters::faces and of the boundary ids: x-, x+, y-, y+, z-, z+.
@@ -155,6 +166,7 @@ struct FeSceneParameters
   /// step and across steps) while the step length holds and the Krylov iterations stay below
   /// twice, plus 10, those of the first solve after it was built; false: rebuild every solve.
   bool reuse_preconditioner = true;
+  InterfaceStiffnessSolver interface_stiffness_solver = InterfaceStiffnessSolver::automatic;
 
   /// Paper default: the four side faces (normals x and z) fixed, entrance and exit free.
   std::array<FaceParameters, n_slab_faces> faces{{{FaceParameters::Condition::fixed, {}, {}},

@@ -369,14 +369,15 @@ bool preconditioner_outdated(const FarFieldSolver::Data& d, const ImplicitData& 
          im.last_iterations > 2 * im.iterations_after_setup + 10;
 }
 
-/// One Newton correction: AMG-preconditioned CG or GMRES on the condensed system, added to
-/// the displacement. Returns what failed ("" on success).
+/// One Newton correction: AMG-preconditioned CG or GMRES, or a sparse LU, on the condensed
+/// system, added to the displacement. Returns what failed ("" on success).
 std::string apply_newton_correction(FarFieldSolver::Data& d, ImplicitData& im, const double dt,
                                     const double residual, const bool lifting,
                                     ImplicitStepStatistics& stats)
 {
   const auto t0 = std::chrono::steady_clock::now();
-  if (preconditioner_outdated(d, im, dt))
+  const bool direct = d.prm.linear_solver == LinearSolverType::direct;
+  if (!direct && preconditioner_outdated(d, im, dt))
   {
     TrilinosWrappers::PreconditionAMG::AdditionalData amg;
     amg.elliptic = true;
@@ -394,7 +395,13 @@ std::string apply_newton_correction(FarFieldSolver::Data& d, ImplicitData& im, c
   im.increment = 0.0;
   try
   {
-    if (d.prm.linear_solver == LinearSolverType::cg)
+    if (direct)
+    {
+      TrilinosWrappers::SolverDirect solver(
+        control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
+      solver.solve(im.matrix, im.increment, im.rhs);
+    }
+    else if (d.prm.linear_solver == LinearSolverType::cg)
     {
       TrilinosWrappers::SolverCG solver(control);
       solver.solve(im.matrix, im.increment, im.rhs, im.preconditioner);

@@ -2,6 +2,8 @@
 // interface dofs, column by column. A unit displacement of one interface dof (the others held,
 // the rest of the body free) is answered by the forces the interface nodes need; the hybrid
 // coupling builds from it the window's effective interface mass (docs/far_field.md, section 1).
+// The held matrix is factorized once (MUMPS through Amesos) and every probe is a pair of
+// triangular solves, or, for far fields too large to factorize, a CG solve per probe.
 #include "fem/far_field_data.h"
 #include "fem/cell_stiffness.h"
 #include "fem/ordered_cell_loop.h"
@@ -27,7 +29,9 @@ using namespace dealii;
 struct InterfaceStiffnessData
 {
   TrilinosWrappers::SparseMatrix matrix; ///< Newton matrix, interface and supports held
-  TrilinosWrappers::PreconditionAMG preconditioner;
+  TrilinosWrappers::PreconditionAMG preconditioner; ///< iterative probing
+  SolverControl direct_control;                     ///< the direct solver keeps a reference
+  std::unique_ptr<TrilinosWrappers::SolverDirect> direct; ///< factorized once, every probe
   /// Cells holding an interface dof: their dofs and full (unconstrained) cell matrices.
   std::vector<std::vector<types::global_dof_index>> cell_dofs;
   std::vector<FullMatrix<double>> cell_matrices;
@@ -35,6 +39,11 @@ struct InterfaceStiffnessData
 
 namespace
 {
+/// Largest far field (global dofs) whose interface stiffness `automatic` factorizes. The
+/// coarse decks' 25,872 dofs factorize in 1.3 s; the bound keeps the factor's memory (its fill
+/// grows faster than the dofs in 3D) to far fields a few times larger, where it was not measured.
+constexpr types::global_dof_index direct_interface_stiffness_dofs = 150000;
+
 /// Flags (ghosted, 1.0) the interface dofs every rank's cells can see.
 FarFieldSolver::Data::Vector interface_dof_flags(const FarFieldSolver::Data& d)
 {
@@ -142,6 +151,18 @@ void FarFieldSolver::prepare_interface_stiffness(const double dt)
     s->matrix.add(dof, dof, mass_factor * d.dead_dof_mass);
   s->matrix.compress(VectorOperation::add);
 
+  const bool direct =
+    d.prm.interface_stiffness_solver == InterfaceStiffnessSolver::direct ||
+    (d.prm.interface_stiffness_solver == InterfaceStiffnessSolver::automatic &&
+     d.dof_handler.n_dofs() <= direct_interface_stiffness_dofs);
+  if (direct)
+  {
+    s->direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+      s->direct_control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
+    s->direct->initialize(s->matrix);
+    d.interface_stiffness = s;
+    return;
+  }
   TrilinosWrappers::PreconditionAMG::AdditionalData amg;
   amg.elliptic = true;
   amg.higher_order_elements = d.prm.degree > 1;
@@ -192,7 +213,9 @@ std::vector<Tensor<1, 3>> FarFieldSolver::interface_stiffness_response(
 
   Data::Vector answer(d.owned_dofs, d.comm);
   const double norm = rhs.l2_norm();
-  if (norm > 0.0)
+  if (norm > 0.0 && s.direct)
+    s.direct->solve(answer, rhs);
+  else if (norm > 0.0)
   {
     // The matrix only steers the balance's chord iteration, which closes each window to its
     // own tolerance, and probing already leaves 0.4 % out: 1e-6 is ample (1e-12 cost 1.7

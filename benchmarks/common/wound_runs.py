@@ -22,6 +22,7 @@ FIGURES = [
     ("vol_total", lambda s: s["failed_volume_m3"]["total"]),
     ("entrance_d", lambda s: s["entrance_wound"]["equivalent_diameter_m"]),
     ("exit_d", lambda s: s["exit_wound"]["equivalent_diameter_m"]),
+    ("entrance_aspect", lambda s: s["entrance_wound"]["aspect_ratio"]),
     ("exit_aspect", lambda s: s["exit_wound"]["aspect_ratio"]),
     ("tract_area", lambda s: mean(s["tract"]["area_m2"])),
     ("exit_velocity", lambda s: s["bullet"]["exit_velocity_m_s"]),

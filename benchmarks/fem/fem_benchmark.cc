@@ -1,7 +1,8 @@
 // Far-field throughput on the paper slab (50 x 10 x 50 mm) with a 10 x 10 mm MPM hole through
 // the thickness: set-up time, explicit steps (quadrature-point updates per second) and
-// implicit Newmark steps with the multigrid hierarchy rebuilt every solve and reused (Newton
-// and linear iterations, seconds per step split into assembly, set-up and Krylov).
+// implicit Newmark steps with the multigrid hierarchy rebuilt every solve and reused, and with
+// a sparse LU (Newton and linear iterations, seconds per step split into assembly, set-up and
+// solve).
 // Usage: fem_benchmark [interface_cell_size_m=1e-3] [far_cell_size_m=2e-3] [grading=1.15]
 //                      [explicit_steps=50] [implicit_steps=2]
 #include "fem/far_field_solver.h"
@@ -42,14 +43,18 @@ int main(int argc, char** argv)
   {
     TimeIntegrator integrator;
     bool reuse_preconditioner;
+    LinearSolverType linear_solver;
   };
-  for (const Case run_case : {Case{TimeIntegrator::central_difference, true},
-                              Case{TimeIntegrator::newmark, false},
-                              Case{TimeIntegrator::newmark, true}})
+  for (const Case run_case :
+       {Case{TimeIntegrator::central_difference, true, LinearSolverType::cg},
+        Case{TimeIntegrator::newmark, false, LinearSolverType::cg},
+        Case{TimeIntegrator::newmark, true, LinearSolverType::cg},
+        Case{TimeIntegrator::newmark, true, LinearSolverType::direct}})
   {
     const TimeIntegrator integrator = run_case.integrator;
     p.integrator = integrator;
     p.reuse_preconditioner = run_case.reuse_preconditioner;
+    p.linear_solver = run_case.linear_solver;
     p.time_step = 1e-5;
     const auto t0 = std::chrono::steady_clock::now();
     FarFieldSolver solver(p, MPI_COMM_WORLD);
@@ -78,10 +83,12 @@ int main(int argc, char** argv)
     const double run = seconds_since(t1);
     if (root)
     {
-      std::cout << (implicit ? (run_case.reuse_preconditioner
-                                  ? "implicit Newmark, multigrid reused"
-                                  : "implicit Newmark, multigrid rebuilt every solve")
-                             : "explicit central difference")
+      std::cout << (!implicit ? "explicit central difference"
+                    : run_case.linear_solver == LinearSolverType::direct
+                      ? "implicit Newmark, sparse LU"
+                    : run_case.reuse_preconditioner
+                      ? "implicit Newmark, multigrid reused"
+                      : "implicit Newmark, multigrid rebuilt every solve")
                 << ", " << omp_get_max_threads() << " thread(s): "
                 << solver.n_active_cells() << " cells, " << solver.n_dofs() << " dofs, "
                 << solver.n_quadrature_points() << " q-points, "
@@ -93,7 +100,7 @@ int main(int argc, char** argv)
                   << ", linear iterations/Newton iteration "
                   << double(linear) / std::max(newton, 1u) << ", multigrid set-ups " << setups
                 << "\n  per step: assembly " << assembly / n_steps << " s, multigrid set-up "
-                << preconditioner / n_steps << " s, Krylov " << krylov / n_steps << " s\n";
+                << preconditioner / n_steps << " s, solve " << krylov / n_steps << " s\n";
       else
       {
         const FePhaseTimes& t = solver.explicit_phase_times();
