@@ -2,6 +2,7 @@
 #include "io/csv_columns.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -45,17 +46,10 @@ std::vector<std::vector<double>> read_csv_columns(const std::string& path,
     const std::vector<std::string> fields = split(line);
     for (std::size_t k = 0; k < names.size(); ++k)
     {
-      std::size_t used = 0;
-      double value = 0.0;
-      try
-      {
-        value = index[k] < fields.size() ? std::stod(fields[index[k]], &used) : 0.0;
-      }
-      catch (const std::exception&)
-      {
-        used = 0;
-      }
-      if (index[k] >= fields.size() || used != fields[index[k]].size())
+      const char* text = index[k] < fields.size() ? fields[index[k]].c_str() : "";
+      char* end = nullptr;
+      const double value = std::strtod(text, &end);
+      if (end == text || *end != '\0')
         throw std::runtime_error(path + " line " + std::to_string(line_number) + ": column \"" +
                                  names[k] + "\" is not a number");
       columns[k].push_back(value);

@@ -81,7 +81,8 @@ void HistoryWriter::add_to_summary(nlohmann::json& summary) const
     nlohmann::json& record = summary["supports"][faces[f]];
     record["normal_impulse_late_mean_N_s"] = late.mean;
     record["normal_impulse_late_range_N_s"] = {late.min, late.max};
-    summary["supports_late_window_s"] = {late.from_time, late.to_time};
+    if (f == 0) // the same window for every face
+      summary["supports_late_window_s"] = {late.from_time, late.to_time};
   }
 }
 
