@@ -142,13 +142,13 @@ void check_time(const RunParameters& p, Checker& check)
   check.require(scene.min_time_step < scene.max_time_step, "Time/Minimum time step",
                 "must be below Time/Maximum time step (got " + number(scene.min_time_step) +
                     " >= " + number(scene.max_time_step) + ")",
-                "lower it, e.g. 1e-12");
+                "lower it, e.g. " + number(1e-3 * scene.max_time_step));
   check.require(!(scene.end_time > 0.0) || scene.min_time_step < scene.end_time,
                 "Time/Minimum time step",
                 "must be below Time/End time (got " + number(scene.min_time_step) +
                     " >= " + number(scene.end_time) + "), so the first step would already stop "
                     "the run as a collapsed step",
-                "lower it, e.g. 1e-12");
+                "lower it, e.g. " + number(1e-3 * scene.end_time));
   const EnergyGuardParameters& guard = p.energy_guard;
   check.require_all(guard.warning <= 0.0 || guard.limit <= 0.0 || guard.warning < guard.limit,
                     {"Time/Energy balance warning", "Time/Energy balance limit"},

@@ -42,6 +42,10 @@ struct GridFields
   /// sum_p N_i(x_p) sigma_p per node and body (Voigt xx yy zz xy yz xz), for the contact's
   /// compression criterion only (GridUpdateSettings::hold_compressed_surfaces).
   std::vector<Eigen::Matrix<double, 6, 1>> stress_sum;
+  /// The velocity change contact gave each deformable body's node this step (v^(n+1) after the
+  /// correction less before it; zero where no contact acted), sized when contact is on. The
+  /// points' velocity update weighs it to book the kinetic energy contact took from them.
+  std::vector<Vector3> contact_change;
 
   /// Sizes the arrays; data is not cleared (the scatter clears it in parallel).
   void resize(std::size_t n_active_nodes)

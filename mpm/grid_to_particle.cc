@@ -14,18 +14,23 @@ namespace
 {
 /// Velocity update of the points of one share of one deformable body: the FLIP/PIC blend
 /// v = a (v_p + sum w (v_i^(n+1) - v_i^n)) + (1 - a) sum w v_i^(n+1). With Project (MUSL),
-/// each point's new momentum goes back to the nodes it read from, with the same weights.
-template <ShapeFunction shape, bool project>
-void update_share_velocities(const Grid& grid, const double lp, const double flip,
-                             const std::size_t b, const ShareRange range, const GridFields& fields,
-                             Particles& particles, Vector3* momentum, Vector3* contested)
+/// each point's new momentum goes back to the nodes it read from, with the same weights. With
+/// Book, returns the kinetic energy the contact corrections took from the points (see
+/// update_point_kinematics).
+template <ShapeFunction shape, bool project, bool book>
+double update_share_velocities(const Grid& grid, const double lp, const double flip,
+                               const std::size_t b, const ShareRange range,
+                               const GridFields& fields, Particles& particles, Vector3* momentum,
+                               Vector3* contested)
 {
   constexpr int n_entries = stencil_entries(shape);
   const std::size_t n_bodies = particles.n_bodies();
+  double contact_loss = 0.0;
   for (long p = range.begin; p < range.end; ++p)
   {
     Vector3 v_pic = Vector3::Zero();
     Vector3 dv = Vector3::Zero();
+    Vector3 dv_contact = Vector3::Zero();
     std::array<std::int32_t, n_entries> slots;
     std::array<double, n_entries> weights;
     int n_nodes = 0;
@@ -36,6 +41,8 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
                            const std::size_t e = slot * n_bodies + b;
                            v_pic += w * fields.velocity_new[e];
                            dv += w * (fields.velocity_new[e] - fields.velocity[e]);
+                           if constexpr (book)
+                             dv_contact += w * fields.contact_change[e];
                            if constexpr (project)
                            {
                              slots[n_nodes] = slot;
@@ -44,6 +51,12 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
                          });
     const Vector3 v_flip = particles.velocity[p] + dv;
     const Vector3 v = flip * v_flip + (1.0 - flip) * v_pic;
+    if constexpr (book)
+    {
+      const Vector3 mean = 0.5 * (particles.velocity[p] + v_flip - dv_contact);
+      contact_loss +=
+        0.5 * particles.mass[p] * (mean.squaredNorm() - (mean + dv_contact).squaredNorm());
+    }
     // Kinetic energy the blend takes from the FLIP velocity (PIC's damping), booked as
     // dissipated so the energy balance closes.
     if (flip < 1.0)
@@ -58,6 +71,7 @@ void update_share_velocities(const Grid& grid, const double lp, const double fli
         scatter_target(grid, slots[i], n_bodies, b, momentum, contested) += weights[i] * mv;
     }
   }
+  return contact_loss;
 }
 /// ln(J_new / J_old) / dt, or `fallback` (the trace of L) where either J is not positive.
 double volume_rate(const double J_old, const double J_new, const double dt, const double fallback)
@@ -66,44 +80,60 @@ double volume_rate(const double J_old, const double J_new, const double dt, cons
 }
 } // namespace
 
-void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
-                             const KinematicsSettings& s, GridFields& fields, Particles& particles,
-                             ScatterBuffers* projection)
+double update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
+                               const KinematicsSettings& s, GridFields& fields,
+                               Particles& particles, ScatterBuffers* projection,
+                               const bool book_contact)
 {
+  const std::size_t n_bodies = particles.n_bodies();
+  // Per share and body, summed in that order afterwards: the same total on every run.
+  std::vector<double> contact_loss(book_contact ? grid.n_point_shares() * n_bodies : 0, 0.0);
   with_shape(
       transfer.shape,
       [&](auto shape_constant)
       {
         constexpr ShapeFunction shape = decltype(shape_constant)::value;
         // One share's points of body b; momentum and contested are null without projection.
-        auto update =
-            [&](const std::size_t b, const ShareRange range, Vector3* momentum, Vector3* contested)
+        auto update = [&](const int share, const std::size_t b, const ShareRange range,
+                          Vector3* momentum, Vector3* contested)
         {
           const double flip =
             s.body_flip_fraction.empty() ? s.flip_fraction : s.body_flip_fraction[b];
+          const double lp = transfer.half_size_cells[b];
           if (s.skips(b))
             return;
           if (s.body_is_rigid[b])
             for (long p = range.begin; p < range.end; ++p)
               particles.velocity[p] = s.rigid_velocity[b];
+          else if (book_contact)
+            contact_loss[share * n_bodies + b] =
+              momentum ? update_share_velocities<shape, true, true>(
+                           grid, lp, flip, b, range, fields, particles, momentum, contested)
+                       : update_share_velocities<shape, false, true>(
+                           grid, lp, flip, b, range, fields, particles, nullptr, nullptr);
           else if (momentum)
-            update_share_velocities<shape, true>(grid, transfer.half_size_cells[b], flip, b,
-                                                 range, fields, particles, momentum, contested);
+            update_share_velocities<shape, true, false>(grid, lp, flip, b, range, fields,
+                                                        particles, momentum, contested);
           else
-            update_share_velocities<shape, false>(grid, transfer.half_size_cells[b], flip, b,
-                                                  range, fields, particles, nullptr, nullptr);
+            update_share_velocities<shape, false, false>(grid, lp, flip, b, range, fields,
+                                                         particles, nullptr, nullptr);
         };
         if (projection)
         {
-          fields.projected_momentum.resize(grid.n_active() * particles.n_bodies());
+          fields.projected_momentum.resize(grid.n_active() * n_bodies);
           scatter_by_shares(grid, particles, Vector3::Zero().eval(), fields.projected_momentum,
                             projection->momentum_per_share, update);
         }
         else
           visit_shares_in_parallel(particles, grid.n_point_shares(),
-                                   [&](int, const std::size_t b, const ShareRange range)
-                                   { update(b, range, nullptr, nullptr); });
+                                   [&](const int share, const std::size_t b,
+                                       const ShareRange range)
+                                   { update(share, b, range, nullptr, nullptr); });
       });
+  double total = 0.0;
+  for (const double loss : contact_loss)
+    total += loss;
+  return total;
 }
 
 void update_deformation_gradients_and_positions(const Grid& grid, const TransferSettings& transfer,

@@ -41,10 +41,19 @@ struct KinematicsSettings
 /// FLIP/PIC blend. Rigid bodies take their rigid velocity. With `projection` (MUSL), the
 /// same pass projects every deformable point's new momentum m v back to the nodes marked for
 /// this step, into fields.projected_momentum (zero at rigid bodies' entries), using the
-/// projection's per-share buffers for the contested nodes.
-void update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
-                             const KinematicsSettings& settings, GridFields& fields,
-                             Particles& particles, ScatterBuffers* projection);
+/// projection's per-share buffers for the contested nodes. With `book_contact`,
+/// fields.contact_change holds the step's contact corrections and the function returns the
+/// kinetic energy they took from these points (J; negative where they gave some): per point
+/// m (|u|^2 - |u + dv_c|^2) / 2, with dv_c the weighted nodal corrections (which the FLIP and
+/// the PIC velocity both carry) and u the point's mean velocity over the forces' increment,
+/// (v_p + v_flip - dv_c) / 2: the correction's impulse does its work at the step's mean
+/// velocity. Where contact cancels a node's force every step the step loses m |dt f / m|^2 / 2
+/// that no later step gives back; this books it as the contact's (docs/validation.md).
+/// Otherwise it returns 0.
+double update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
+                               const KinematicsSettings& settings, GridFields& fields,
+                               Particles& particles, ScatterBuffers* projection,
+                               bool book_contact = false);
 
 /// One gather per point at its position of step n: F <- (I - dt L/2)^-1 (I + dt L/2) F
 /// (midpoint) or F <- (I + dt L) F (forward Euler) with L = sum v_gradient (x) grad w, then x <- x + dt sum w v_new (v_new = fields.velocity_new, the

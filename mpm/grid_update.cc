@@ -100,10 +100,14 @@ double exact_surface_engagement(const GridUpdateSettings& s, const NodeBodyData*
 }
 
 /// Corrects the velocities of the bodies meeting at one node. `v` holds the trial
-/// velocities of the n_bodies entries; returns the kinetic energy removed.
+/// velocities of the n_bodies entries; returns the kinetic energy removed. With `body_change`,
+/// the deformable bodies' velocity changes are written there (the subcycled body's stays zero)
+/// and only the work their changes do against v_cm (the rigid body's or leader's energy
+/// transfer, zero between deformable bodies) is returned: the energy the points lose is booked
+/// where they take their velocities, from these changes (update_point_kinematics).
 double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data,
                        const SymmetricTensor* stress, Vector3* v, const std::size_t n_bodies,
-                       Vector3* contact_force_local)
+                       Vector3* contact_force_local, Vector3* body_change = nullptr)
 {
   // Centre-of-mass velocity, or the velocity of the rigid body, else of the contact leader,
   // when one is present (both are called rigid below: the others follow them).
@@ -229,7 +233,9 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data,
       contact_force_local[rigid] -= force;
     // Kinetic energy lost relative to the centre of mass (equals the total loss because the
     // corrections conserve momentum, and counts work done on a rigid body as a transfer).
-    if (static_cast<int>(b) == s.subcycled_body)
+    if (body_change && static_cast<int>(b) != s.subcycled_body)
+      body_change[b] = v[b] - before;
+    if (body_change || static_cast<int>(b) == s.subcycled_body)
       dissipated += v_cm.dot(m * (v[b] - before)); // see below
     else
       dissipated += 0.5 * m * ((before - v_cm).squaredNorm() - (v[b] - v_cm).squaredNorm());
@@ -351,6 +357,7 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
   double dissipation = 0.0;
   std::size_t n_contact_nodes = 0;
   const std::vector<std::int64_t>& keys = grid.active_keys();
+  fields.contact_change.resize(fields.velocity_new.size());
 #pragma omp parallel reduction(+ : dissipation, n_contact_nodes)
   {
     std::vector<Vector3> force_local(n_bodies, Vector3::Zero());
@@ -364,9 +371,13 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
     for (long node = 0; node < n_nodes; ++node)
     {
       const NodeBodyData* data = &fields.data[node * n_bodies];
+      Vector3* change = &fields.contact_change[node * n_bodies];
       std::size_t n_with_mass = 0;
       for (std::size_t b = 0; b < n_bodies; ++b)
+      {
         n_with_mass += data[b].mass > s.mass_tolerance;
+        change[b].setZero();
+      }
       if (n_with_mass < 2)
         continue;
       std::size_t rigid_present[2] = {0, 0}, n_rigid = 0;
@@ -392,7 +403,7 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
       const std::size_t rigid = rigid_present[0];
       const Vector3 rigid_force_before = n_rigid == 1 ? force[rigid] : Vector3::Zero();
       const double removed =
-        resolve_contact(s, data, nodal_stress(s, fields, node), v_new, n_bodies, force);
+        resolve_contact(s, data, nodal_stress(s, fields, node), v_new, n_bodies, force, change);
       if (n_rigid == 1)
       {
         const Vector3 on_rigid = force[rigid] - rigid_force_before;
@@ -407,8 +418,12 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
       }
       for (std::size_t b = 0; b < n_bodies; ++b)
         if (data[b].mass > s.mass_tolerance && !s.body_is_rigid[b])
+        {
           apply_face_conditions(grid, s.faces, keys[node], data[b].mass, v_new[b],
                                 owned ? impulse_local : impulse_elsewhere);
+          // The face conditions are projections: what is left of the correction after them.
+          apply_face_conditions(grid, s.faces, keys[node], change[b]);
+        }
     }
 #pragma omp critical
     {

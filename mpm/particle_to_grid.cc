@@ -105,7 +105,7 @@ void particles_to_grid(const Particles& particles, const Grid& grid,
              {
                constexpr ShapeFunction shape = decltype(shape_constant)::value;
                scatter_by_shares(grid, particles, NodeBodyData(), fields.data, buffers.per_share,
-                                 [&](const std::size_t b, const ShareRange range,
+                                 [&](int, const std::size_t b, const ShareRange range,
                                      NodeBodyData* direct, NodeBodyData* contested)
                                  {
                                    const bool n = settings.contact_normals, a = settings.affine;
@@ -142,8 +142,8 @@ void scatter_nodal_stress(const Particles& particles, const Grid& grid,
                scatter_by_shares(
                  grid, particles, SymmetricTensor(SymmetricTensor::Zero()), fields.stress_sum,
                  buffers.stress_per_share,
-                 [&](const std::size_t b, const ShareRange range, SymmetricTensor* direct,
-                     SymmetricTensor* contested)
+                 [&](int, const std::size_t b, const ShareRange range,
+                     SymmetricTensor* direct, SymmetricTensor* contested)
                  {
                    const double lp = settings.half_size_cells[b];
                    for (long p = range.begin; p < range.end; ++p)

@@ -71,8 +71,8 @@ void visit_shares_in_parallel(const Particles& particles, const int n_shares, Vi
 
 /// Sums per-point contributions into the grid field `fields` (n_active x n_bodies entries,
 /// sized by the caller) by the shares of the last node marking: zeroes it and the per-share
-/// buffers of the contested nodes, runs scatter(body, range, fields, contested) over every
-/// share's points (each share on one thread; it adds through scatter_target), then adds the
+/// buffers of the contested nodes, runs scatter(share, body, range, fields, contested) over
+/// every share's points (each share on one thread; it adds through scatter_target), then adds the
 /// contested buffers in share order. `zero` is the entry's zero (Eigen vectors are not zeroed
 /// by their default constructor).
 template <class Entry, class Scatter>
@@ -97,7 +97,7 @@ void scatter_by_shares(const Grid& grid, const Particles& particles, const Entry
       std::fill(per_share[share].begin(), per_share[share].end(), zero);
     visit_own_shares(particles, n_shares,
                      [&](const int share, const std::size_t b, const ShareRange range)
-                     { scatter(b, range, fields.data(), per_share[share].data()); });
+                     { scatter(share, b, range, fields.data(), per_share[share].data()); });
 #pragma omp barrier
 #pragma omp for schedule(static)
     for (long c = 0; c < n_contested; ++c)

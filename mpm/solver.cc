@@ -385,7 +385,14 @@ void Solver::advance(const double cap)
 
   kinematics.time_step = dt;
   const bool musl = parameters.update_scheme == UpdateScheme::musl;
-  update_point_kinematics(grid, transfer, kinematics, fields, particles, musl ? &buffers : nullptr);
+  double contact_loss_of_points = update_point_kinematics(
+    grid, transfer, kinematics, fields, particles, musl ? &buffers : nullptr, grid_settings.contact);
+  if (grid_settings.contact)
+  {
+    if (ranks.distributed())
+      ranks.sum(&contact_loss_of_points, 1);
+    accumulated_contact_dissipation += contact_loss_of_points;
+  }
   if (musl)
   {
     sum_projected_momenta_with_neighbours();

@@ -130,9 +130,12 @@ mpm::SceneParameters ball_into_gelatin()
   return scene;
 }
 
-TEST(Penetration, ABallStopsInGelatinWithItsMomentumAccountedFor)
+/// Runs the scene until the ball stops, asserting the momentum balance at every step;
+/// returns the largest energy balance error of the run (relative to the start's energy).
+double largest_energy_error_until_the_ball_stops(const mpm::SceneParameters& scene,
+                                                 double* stop_depth)
 {
-  mpm::Solver solver(ball_into_gelatin());
+  mpm::Solver solver(scene);
   const Vector3 initial_momentum = solver.initial_momentum();
   double largest_error = 0.0;
   std::size_t steps = 0;
@@ -147,23 +150,48 @@ TEST(Penetration, ABallStopsInGelatinWithItsMomentumAccountedFor)
     for (const Vector3& impulse : solver.support_impulses())
       supplied += impulse;
     const Vector3 balance = d.momentum - supplied + solver.removed_momentum() - initial_momentum;
-    ASSERT_LT(balance.norm(), 1e-9 * initial_momentum.norm()) << "step " << steps;
+    EXPECT_LT(balance.norm(), 1e-9 * initial_momentum.norm()) << "step " << steps;
     largest_error = std::max(largest_error,
                              std::abs(analysis::relative_balance_error(
                                  analysis::accounted_energy(solver, d), solver.initial_energy())));
   }
   const mpm::ProjectilePenetration& p = solver.penetration();
-  ASSERT_TRUE(p.stopped());
-  EXPECT_GT(p.stop().depth, 2.5e-3); // the ball went in
-  EXPECT_LT(p.stop().depth, 12e-3);  // and stopped inside
+  EXPECT_TRUE(p.stopped());
   EXPECT_FALSE(solver.projectile_exit().recorded);
-  // Energy is not asserted: in this slow contact the grid's contact correction books more
-  // dissipation than the scene loses (strain plus kinetic energy alone keep 90 % of the start's
-  // with an elastic gel, while contact books 65 %: a balance of +30 to +60 %, rigid or
-  // deformable ball, FLIP or PIC), a defect of the contact's bookkeeping noted on issue 45,
-  // not of the gelatin law, whose own balance RateDependentPlasticity checks.
+  *stop_depth = p.stop().depth;
   std::cout << "stopped after " << steps << " steps at depth " << p.stop().depth * 1e3
             << " mm; largest energy balance error " << largest_error << "\n";
+  return largest_error;
+}
+
+TEST(Penetration, ABallStopsInGelatinWithItsMomentumAndEnergyAccountedFor)
+{
+  double depth = 0.0;
+  const double error = largest_energy_error_until_the_ball_stops(ball_into_gelatin(), &depth);
+  EXPECT_GT(depth, 2.5e-3); // the ball went in
+  EXPECT_LT(depth, 12e-3);  // and stopped inside
+  // Every step the contact cancels the force at the nodes the ball holds, and the step loses
+  // that force's kinetic energy, which no later step gives back: the contact books it (its
+  // impulse works at the step's mean velocity). Measured 0.022 (1.0 % at half the step);
+  // booking the correction at the trial velocities, as until stop 61, gave 0.295.
+  EXPECT_LT(error, 0.04);
+}
+
+TEST(Penetration, AnElasticGelsEnergyBalanceClosesAsTheStepIsHalved)
+{
+  // Elastic gel (no yield): nothing but the contact and the time integration can lose energy.
+  mpm::SceneParameters scene = ball_into_gelatin();
+  scene.materials[0].parameters.elastic_plastic.yield_stress = 1e9;
+  double depth = 0.0;
+  const double error = largest_energy_error_until_the_ball_stops(scene, &depth);
+  scene.cfl *= 0.5;
+  double depth_half = 0.0;
+  const double error_half = largest_energy_error_until_the_ball_stops(scene, &depth_half);
+  // Measured 0.011 and 0.0053: first order in the step (the symplectic step's own energy
+  // error), against 0.33 with the correction booked at the trial velocities.
+  EXPECT_LT(error, 0.02);
+  EXPECT_LT(error_half, 0.6 * error);
+  EXPECT_NEAR(depth_half, depth, 0.05 * depth);
 }
 
 TEST(TemporaryCavity, ClosedBeforeTheBallAndAtLeastTheBallWhileItPasses)
