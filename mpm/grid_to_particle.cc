@@ -51,12 +51,10 @@ double update_share_velocities(const Grid& grid, const double lp, const double f
                          });
     const Vector3 v_flip = particles.velocity[p] + dv;
     const Vector3 v = flip * v_flip + (1.0 - flip) * v_pic;
+    // m (|u|^2 - |u + dv_c|^2) / 2 with u = (v_p + v_flip - dv_c) / 2, without the difference
+    // of squares.
     if constexpr (book)
-    {
-      const Vector3 mean = 0.5 * (particles.velocity[p] + v_flip - dv_contact);
-      contact_loss +=
-        0.5 * particles.mass[p] * (mean.squaredNorm() - (mean + dv_contact).squaredNorm());
-    }
+      contact_loss -= 0.5 * particles.mass[p] * dv_contact.dot(particles.velocity[p] + v_flip);
     // Kinetic energy the blend takes from the FLIP velocity (PIC's damping), booked as
     // dissipated so the energy balance closes.
     if (flip < 1.0)

@@ -231,8 +231,9 @@ double resolve_contact(const GridUpdateSettings& s, const NodeBodyData* data,
     contact_force_local[b] += force;
     if (rigid >= 0)
       contact_force_local[rigid] -= force;
-    // Kinetic energy lost relative to the centre of mass (equals the total loss because the
-    // corrections conserve momentum, and counts work done on a rigid body as a transfer).
+    // Without body_change: kinetic energy lost relative to the centre of mass (equals the
+    // total loss because the corrections conserve momentum, and counts work done on a rigid
+    // body as a transfer). With it, and for the subcycled body: that transfer alone.
     if (body_change && static_cast<int>(b) != s.subcycled_body)
       body_change[b] = v[b] - before;
     if (body_change || static_cast<int>(b) == s.subcycled_body)
