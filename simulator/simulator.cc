@@ -148,6 +148,7 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
   };
 
   double last_progress = 0.0;
+  const double first_time = stepper.time(); // later than 0 after a restart
   int stop_signal = 0;
   while (!stepper.finished())
   {
@@ -188,7 +189,7 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
     if (seconds - last_progress >= 5.0)
     {
       last_progress = seconds;
-      const double rate = stepper.time() / seconds; // simulated seconds per wall second
+      const double rate = (stepper.time() - first_time) / seconds; // simulated s per wall s
       std::ostringstream o;
       o << "t = " << std::scientific << std::setprecision(3) << stepper.time() << " s, step "
         << stepper.step_count() << ", dt = " << stepper.last_time_step() << " s, "

@@ -1,6 +1,8 @@
 // The divergence-free shear mode of a nearly incompressible square, in MPM and in the far field.
 #include "benchmarks/locking/shear_mode.h"
 
+#include "benchmarks/locking/verification_gel.h"
+
 #include "fem/far_field_solver.h"
 #include "mpm/solver.h"
 
@@ -14,7 +16,7 @@ namespace vulnus::verification
 {
 namespace
 {
-constexpr double side = 10e-3, density = 1000.0, c1 = 1e4, mu = 2 * c1, strain = 1e-4;
+constexpr double side = 10e-3, density = 1000.0, mu = verification_gel_shear_modulus, strain = 1e-4;
 const double k = M_PI / side;
 const double shear_speed = std::sqrt(mu / density);
 const double period = 2 * M_PI / (k * std::sqrt(2.0) * shear_speed);
@@ -49,17 +51,6 @@ ShearModeResult measure(Step step, Amplitude amplitude, Time time)
   return r;
 }
 
-materials::MaterialParameters elastic(const double bulk_over_shear)
-{
-  materials::MaterialParameters m;
-  m.model = "isotropic hyperelastic";
-  m.tissue.with_fibers = false;
-  m.tissue.c1 = c1;
-  m.tissue.c2 = 0.0;
-  m.tissue.bulk_modulus = bulk_over_shear * mu;
-  m.tissue.failure.enabled = false;
-  return m;
-}
 } // namespace
 
 ShearModeResult mpm_shear_mode(const unsigned int cells, const double bulk_over_shear,
@@ -76,7 +67,7 @@ ShearModeResult mpm_shear_mode(const unsigned int cells, const double bulk_over_
   scene.cell_volume_averaging = averaging;
   for (auto& face : scene.domain_faces)
     face = mpm::FaceCondition::roller;
-  scene.materials.push_back({"gel", elastic(bulk_over_shear)});
+  scene.materials.push_back({"gel", verification_gel(bulk_over_shear)});
   mpm::BodyParameters square;
   square.name = "square";
   square.material = "gel";
@@ -114,7 +105,7 @@ ShearModeResult fe_shear_mode(const unsigned int cells, const double bulk_over_s
   p.slab_min = {{0.0, 0.0, 0.0}};
   p.slab_max = {{side, side, h}};
   p.interface_cell_size = p.far_cell_size = h;
-  p.material = elastic(bulk_over_shear);
+  p.material = verification_gel(bulk_over_shear);
   p.density = density;
   for (auto& face : p.faces)
     face.condition = fem::FaceParameters::Condition::roller;
