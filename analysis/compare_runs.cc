@@ -212,6 +212,25 @@ void align_tract_slices(const nlohmann::json& a, nlohmann::json& b, std::ostream
       << "); B's tract.area_m2 below is its profile averaged over A's slices\n\n";
 }
 
+/// The entrance and exit wounds are the failed points of a layer below each face; runs that
+/// measured them in layers of different depth (or before the depth was recorded: one cell)
+/// compare different things, which the reader is told.
+void note_face_layers(const nlohmann::json& a, const nlohmann::json& b, std::ostream& out)
+{
+  const auto layer = [](const nlohmann::json& s)
+  {
+    const auto it = s.find("wound_face_layer_m");
+    return it != s.end() && it->is_number() ? format_number(1e3 * it->get<double>(), 4) + " mm"
+                                            : std::string("one cell (run before the entry)");
+  };
+  const std::string layer_a = layer(a), layer_b = layer(b);
+  if (layer_a != layer_b)
+    out << "note: the runs measure the entrance and exit wounds in face layers of different "
+           "depth (A: "
+        << layer_a << ", B: " << layer_b
+        << "); their face figures differ by that too (Output/Wound face layer)\n\n";
+}
+
 /// Linear interpolation of the curve (x increasing where it is sampled) at x; nothing outside.
 std::optional<double> interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
                                   const double x)
@@ -534,6 +553,7 @@ int compare_runs(const std::string& run_a, const std::string& run_b, std::ostrea
 
     out << "A: " << run_a << "\nB: " << run_b << "\n\n";
     align_tract_slices(summary_a, summary_b, out);
+    note_face_layers(summary_a, summary_b, out);
     compact_penetration(summary_a, summary_b, out);
     compare_summaries(summary_a, summary_b, out);
     if (points_a && points_b)

@@ -23,6 +23,9 @@ struct RunTotals
   std::string error; ///< blow-up message when not completed
   std::vector<std::string> warnings;
   std::uint64_t mpi_bytes_sent = 0; ///< over all ranks, by this process (a restart counts anew)
+  /// Output/Wound face layer: the depth the entrance and exit wounds are measured in, m (0: one
+  /// cell).
+  double wound_face_layer = 0.0;
 };
 
 /// Total energy accounted for (J): kinetic + strain + potential + dissipated in the materials,

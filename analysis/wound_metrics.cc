@@ -56,7 +56,7 @@ PathThroughBox path_through_box(const Vector3& lower, const Vector3& upper, cons
 
 namespace
 {
-/// Totally failed points within one cell inside `face` of the box.
+/// Totally failed points within the face layer inside `face` of the box.
 FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& volume,
                      const std::vector<std::uint8_t>& flags, const WoundGeometry& g, const int face)
 {
@@ -66,9 +66,10 @@ FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& v
   const bool lower_face = face % 2 == 0;
   const double plane = lower_face ? g.box_lower[axis_index] : g.box_upper[axis_index];
   const double inward = lower_face ? 1.0 : -1.0;
+  const double layer = g.face_layer > 0.0 ? g.face_layer : g.cell_size;
   auto in_layer = [&](const std::size_t p) {
     const double depth = inward * (x[p][axis_index] - plane);
-    return flags[p] == 3 && depth >= 0.0 && depth <= g.cell_size;
+    return flags[p] == 3 && depth >= 0.0 && depth <= layer;
   };
   double total = 0.0;
   Vector3 mean = Vector3::Zero();
@@ -82,7 +83,7 @@ FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& v
   if (w.n_points == 0)
     return w;
   mean /= total;
-  w.area = total / g.cell_size;
+  w.area = total / layer;
   w.equivalent_diameter = std::sqrt(4.0 * w.area / M_PI);
   Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
   for (std::size_t p = 0; p < x.size(); ++p)

@@ -54,6 +54,9 @@ struct WoundGeometry
   Vector3 path_origin = Vector3::Zero();                            ///< m
   Vector3 path_direction = Vector3::UnitY();                        ///< unit
   double cell_size = 0.0;                                           ///< m
+  /// Depth below the entrance and exit faces of the layer their wounds are measured in, m;
+  /// 0: one cell.
+  double face_layer = 0.0;
   bool projectile_exited = true; ///< whether an exit wound is measured
 };
 

@@ -3,6 +3,7 @@
 #include "analysis/wound_sample.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -52,6 +53,7 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
     sample.has_target = true;
     const double half_spacing =
       0.5 * solver.scene().cell_size / solver.scene().bodies[b].particles_per_cell;
+    sample.point_spacing = std::max(sample.point_spacing, 2.0 * half_spacing);
     for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
     {
       const mpm::Vector3 X = p.reference_position[i].cast<double>();
@@ -130,7 +132,18 @@ bool left_through_exit_face(const WoundSample& sample, const mpm::Solver& solver
                                  : exit.position[d] < sample.target_lower[d];
 }
 
-WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solver)
+double face_layer_used(const WoundSample& sample, const mpm::Solver& solver, const double face_layer)
+{
+  const double wanted = face_layer > 0.0 ? face_layer : solver.scene().cell_size;
+  const double spacing = sample.point_spacing;
+  if (spacing <= 0.0)
+    return wanted;
+  // Whole rows of points, so that the failed volume over the depth is an area.
+  return spacing * std::max(1.0, std::round(wanted / spacing));
+}
+
+WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solver,
+                              const double face_layer)
 {
   if (!sample.has_target)
     return WoundMetrics();
@@ -140,6 +153,7 @@ WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solv
   geometry.path_origin = sample.projectile_origin;
   geometry.path_direction = solver.flight_direction();
   geometry.cell_size = solver.scene().cell_size;
+  geometry.face_layer = face_layer_used(sample, solver, face_layer);
   // A scene without a projectile (a wave test) measures along the flight axis through its
   // middle; an exit wound needs a projectile that left.
   if (solver.projectile() < 0)

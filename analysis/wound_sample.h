@@ -22,6 +22,7 @@ struct WoundSample
   mpm::Vector3 target_upper = mpm::Vector3::Zero();
   mpm::Vector3 projectile_origin = mpm::Vector3::Zero(); ///< its reference mass centre, m
   bool has_target = false;
+  double point_spacing = 0.0; ///< m, the largest point spacing of the target's bodies
   std::uint64_t n_points = 0; ///< every point of the scene, all bodies
 };
 
@@ -34,6 +35,12 @@ WoundSample collect_wound_sample(const mpm::Solver& solver);
 bool left_through_exit_face(const WoundSample& sample, const mpm::Solver& solver);
 
 /// The wound metrics of the sample (on rank 0); the exit wound only for a projectile that
-/// left through the exit face.
-WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solver);
+/// left through the exit face. The entrance and exit wounds are measured in the layer of
+/// depth `face_layer` below their faces (0: one cell), rounded to whole rows of the target's
+/// points (at least one): a 1 mm layer is 1.25 mm deep on a lattice of 0.625 mm.
+WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solver,
+                              double face_layer);
+
+/// The face layer wound_metrics_of measures in, m.
+double face_layer_used(const WoundSample& sample, const mpm::Solver& solver, double face_layer);
 } // namespace vulnus::analysis

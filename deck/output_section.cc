@@ -24,6 +24,13 @@ void declare_output_section(EntryTable& table)
                 "by SIGINT or SIGTERM always writes one. Pure-MPM scenes.");
   table.declare("Checkpoints kept", "2", Patterns::Integer(1, 1000),
                 "Number of newest checkpoints kept; older ones are deleted.");
+  table.declare("Wound face layer", "0.001", Patterns::Double(0.0, 1.0),
+                "Depth below the entrance and exit faces (reference configuration) of the "
+                "layer whose totally failed points are the entrance and exit wounds of "
+                "summary.json [m]; rounded to whole rows of the target's points (at least one). The default "
+                "is the paper's 1 mm cell, so refined runs measure the same layer; 0 measures "
+                "one cell deep, a layer that thins with the cell (the wound flares at the "
+                "faces, so its shape then changes with the grid; docs/locking.md).");
   table.leave();
 }
 
@@ -37,6 +44,7 @@ void parse_output_section(dealii::ParameterHandler& prm, OutputParameters& outpu
     static_cast<unsigned int>(prm.get_integer("Checkpoint step interval"));
   output.checkpoint_wall_interval = prm.get_double("Checkpoint wall interval");
   output.checkpoints_kept = static_cast<unsigned int>(prm.get_integer("Checkpoints kept"));
+  output.wound_face_layer = prm.get_double("Wound face layer");
   prm.leave_subsection();
 }
 

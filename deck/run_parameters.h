@@ -24,6 +24,9 @@ struct OutputParameters
   /// Wall-clock seconds between checkpoints (0: none by wall time).
   double checkpoint_wall_interval = 0.0;
   unsigned int checkpoints_kept = 2;
+  /// Depth below the entrance and exit faces in which their wounds are measured, m (0: one
+  /// cell); rounded to whole rows of the target's points.
+  double wound_face_layer = 1.0e-3;
   /// Set by `vulnus run --restart DIR`: continue from the newest checkpoint in `directory`.
   bool restart = false;
 };

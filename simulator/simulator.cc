@@ -77,6 +77,7 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
   stepper.log_scene(directory);
 
   analysis::RunTotals totals;
+  totals.wound_face_layer = parameters.output.wound_face_layer;
   totals.warnings = scene_warnings(parameters, stepper.mpm_side() != nullptr);
   for (const std::string& w : totals.warnings)
     directory.warn(w);

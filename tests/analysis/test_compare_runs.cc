@@ -275,3 +275,20 @@ TEST(CompareRuns, MissingOrUnreadableInputsGiveStatus2)
   EXPECT_TRUE(result.out.empty()) << result.out;
 }
 } // namespace
+
+TEST(CompareRuns, FaceWoundsMeasuredInOtherLayersAreNoted)
+{
+  const Scratch scratch;
+  const auto old_run = scratch.make("old"), one_mm = scratch.make("one_mm"),
+             two_mm = scratch.make("two_mm");
+  write_summary(old_run, {{"exit_wound", {{"aspect_ratio", 1.2}}}});
+  write_summary(one_mm, {{"exit_wound", {{"aspect_ratio", 1.1}}}, {"wound_face_layer_m", 1e-3}});
+  write_summary(two_mm, {{"exit_wound", {{"aspect_ratio", 1.0}}}, {"wound_face_layer_m", 2e-3}});
+  Result result = compare(one_mm, two_mm);
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "different depth (A: 1 mm, B: 2 mm)")) << result.out;
+  result = compare(old_run, one_mm);
+  EXPECT_TRUE(contains(result.out, "(A: one cell (run before the entry), B: 1 mm)")) << result.out;
+  result = compare(one_mm, one_mm);
+  EXPECT_FALSE(contains(result.out, "note:")) << result.out;
+}

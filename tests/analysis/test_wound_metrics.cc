@@ -1,6 +1,6 @@
 // Wound metrics on synthetic point sets with known answers: a circular cylinder of failed
 // points (its diameter, aspect ratio 1), an elliptic cylinder (its axes ratio), a cone (area
-// growing with depth), and volumes by failure type.
+// growing with depth), volumes by failure type, and face wounds in a layer of fixed depth.
 #include "analysis/wound_metrics.h"
 
 #include <gtest/gtest.h>
@@ -207,4 +207,36 @@ TEST(WoundMetrics, NoExitWoundForAProjectileThatDidNotLeave)
   EXPECT_EQ(beside.entrance.face, -1);
   EXPECT_TRUE(beside.tract_area.empty());
   EXPECT_EQ(beside.counts[3], m.counts[3]);
+}
+
+// The face wounds are measured in a layer of fixed depth, not one cell: a wound that flares
+// at the exit face (an elliptic slot in the last 0.5 mm over a circular tract) reads the same
+// on a 1 mm and a 0.5 mm grid when the layer is 1 mm, and differently when it is one cell.
+TEST(WoundMetrics, FaceLayerOfFixedDepthMeasuresTheSameWoundOnEveryGrid)
+{
+  const double s = 0.125e-3, radius = 3e-3;
+  const PointSet set = slab(s, [&](const Vector3& p) {
+    const bool slot = p[1] > 9.5e-3 && std::abs(p[0]) < 8e-3 && std::abs(p[2]) < 2e-3;
+    return std::uint8_t(slot || p[0] * p[0] + p[2] * p[2] < radius * radius ? 3 : 0);
+  });
+  auto exit_of = [&](const double cell, const double layer) {
+    WoundGeometry g = normal_shot();
+    g.cell_size = cell;
+    g.face_layer = layer;
+    return compute_wound_metrics(set.x, set.volume, set.flags, g).exit;
+  };
+  const FaceWound one_cell_coarse = exit_of(1e-3, 0.0), one_cell_fine = exit_of(0.5e-3, 0.0);
+  const FaceWound fixed_coarse = exit_of(1e-3, 1e-3), fixed_fine = exit_of(0.5e-3, 1e-3);
+  // The one-cell layer of the fine grid is all slot; the coarse one is half slot, half tract.
+  EXPECT_GT(one_cell_fine.aspect_ratio, 1.2 * one_cell_coarse.aspect_ratio);
+  EXPECT_DOUBLE_EQ(fixed_fine.aspect_ratio, fixed_coarse.aspect_ratio);
+  EXPECT_DOUBLE_EQ(fixed_fine.area, fixed_coarse.area);
+  EXPECT_DOUBLE_EQ(fixed_coarse.aspect_ratio, one_cell_coarse.aspect_ratio);
+  // Area: the mean failed cross-section over the layer. The slot and the circle's two caps
+  // beyond |z| = 2 mm in the last 0.5 mm, the circle alone below.
+  const double d = 2e-3, cap = radius * radius * std::acos(d / radius) -
+                               d * std::sqrt(radius * radius - d * d);
+  const double slot_and_caps = 16e-3 * 4e-3 + 2 * cap, tract = M_PI * radius * radius;
+  EXPECT_NEAR(one_cell_fine.area, slot_and_caps, 0.03 * slot_and_caps);
+  EXPECT_NEAR(fixed_coarse.area, 0.5 * (slot_and_caps + tract), 0.03 * slot_and_caps);
 }

@@ -109,7 +109,7 @@ TEST(MpmLongRun, ARicochetLeavesWhenTheProjectileIsClearOfTheTarget)
   // Its mass centre never passed the slab's far face: no exit wound, and the summary says so.
   const analysis::WoundSample sample = analysis::collect_wound_sample(solver);
   EXPECT_FALSE(analysis::left_through_exit_face(sample, solver));
-  EXPECT_EQ(analysis::wound_metrics_of(sample, solver).exit.face, -1);
+  EXPECT_EQ(analysis::wound_metrics_of(sample, solver, 0.0).exit.face, -1);
 }
 } // namespace
 } // namespace vulnus
