@@ -44,7 +44,6 @@ struct Lame
     return 2 * (lambda + mu) * A - 2 * mu * B / (r * r);
   }
   double hoop_stress(const double r) const { return 2 * (lambda + mu) * A + 2 * mu * B / (r * r); }
-  double axial_stress() const { return 2 * lambda * A; }
   double pressure() const { return -(4 * (lambda + mu) * A + 2 * lambda * A) / 3.0; }
   dealii::Tensor<1, 3> displacement(const dealii::Point<3>& x) const
   {
