@@ -113,7 +113,7 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
   j["failed_volume_m3"] = {{"matrix", wound.volumes[1]}, {"fiber", wound.volumes[2]}, {"total", wound.volumes[3]}};
   j["entrance_wound"] = face_json(wound.entrance);
   j["exit_wound"] = face_json(wound.exit);
-  j["wound_face_layer_m"] = face_layer_used(sample, solver, totals.wound_face_layer);
+  j["wound_face_layer_m"] = wound.face_layer;
   j["tract"] = {{"depth_m", wound.tract_depth},
                 {"area_m2", wound.tract_area},
                 {"path_length_m", wound.path.length()},

@@ -56,9 +56,10 @@ PathThroughBox path_through_box(const Vector3& lower, const Vector3& upper, cons
 
 namespace
 {
-/// Totally failed points within the face layer inside `face` of the box.
+/// Totally failed points within `layer` inside `face` of the box.
 FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& volume,
-                     const std::vector<std::uint8_t>& flags, const WoundGeometry& g, const int face)
+                     const std::vector<std::uint8_t>& flags, const WoundGeometry& g, const int face,
+                     const double layer)
 {
   FaceWound w;
   w.face = face;
@@ -66,7 +67,6 @@ FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& v
   const bool lower_face = face % 2 == 0;
   const double plane = lower_face ? g.box_lower[axis_index] : g.box_upper[axis_index];
   const double inward = lower_face ? 1.0 : -1.0;
-  const double layer = g.face_layer > 0.0 ? g.face_layer : g.cell_size;
   auto in_layer = [&](const std::size_t p) {
     const double depth = inward * (x[p][axis_index] - plane);
     return flags[p] == 3 && depth >= 0.0 && depth <= layer;
@@ -119,9 +119,10 @@ WoundMetrics compute_wound_metrics(const std::vector<Vector3>& x, const std::vec
   m.path = path_through_box(g.box_lower, g.box_upper, g.path_origin, g.path_direction);
   if (!m.path.hits)
     return m;
-  m.entrance = face_wound(x, volume, flags, g, m.path.entrance_face);
+  m.face_layer = g.face_layer > 0.0 ? g.face_layer : g.cell_size;
+  m.entrance = face_wound(x, volume, flags, g, m.path.entrance_face, m.face_layer);
   if (g.projectile_exited)
-    m.exit = face_wound(x, volume, flags, g, m.path.exit_face);
+    m.exit = face_wound(x, volume, flags, g, m.path.exit_face, m.face_layer);
 
   const double h = g.cell_size;
   const std::size_t n_slices =

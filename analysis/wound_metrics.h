@@ -69,6 +69,7 @@ struct WoundMetrics
   FaceWound exit; ///< face -1 when the projectile did not leave through the exit face
   std::vector<double> tract_depth; ///< m, slice centres along the path from the entrance point
   std::vector<double> tract_area;  ///< m^2, total-failure cross-section per slice
+  double face_layer = 0.0;         ///< m, the depth the entrance and exit wounds were measured in
 };
 
 /// Points of the target: reference positions, reference volumes, failure flags.

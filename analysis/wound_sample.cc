@@ -132,28 +132,35 @@ bool left_through_exit_face(const WoundSample& sample, const mpm::Solver& solver
                                  : exit.position[d] < sample.target_lower[d];
 }
 
-double face_layer_used(const WoundSample& sample, const mpm::Solver& solver, const double face_layer)
+namespace
 {
-  const double wanted = face_layer > 0.0 ? face_layer : solver.scene().cell_size;
+/// The requested face layer (0: one cell) in whole rows of the target's points, so that the
+/// failed volume over the depth is an area.
+double face_layer_in_rows(const WoundSample& sample, const double cell_size,
+                          const double face_layer)
+{
+  const double wanted = face_layer > 0.0 ? face_layer : cell_size;
   const double spacing = sample.point_spacing;
-  if (spacing <= 0.0)
-    return wanted;
-  // Whole rows of points, so that the failed volume over the depth is an area.
-  return spacing * std::max(1.0, std::round(wanted / spacing));
+  return spacing > 0.0 ? spacing * std::max(1.0, std::round(wanted / spacing)) : wanted;
 }
+} // namespace
 
 WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solver,
                               const double face_layer)
 {
   if (!sample.has_target)
-    return WoundMetrics();
+  {
+    WoundMetrics none;
+    none.face_layer = face_layer_in_rows(sample, solver.scene().cell_size, face_layer);
+    return none;
+  }
   WoundGeometry geometry;
   geometry.box_lower = sample.target_lower;
   geometry.box_upper = sample.target_upper;
   geometry.path_origin = sample.projectile_origin;
   geometry.path_direction = solver.flight_direction();
   geometry.cell_size = solver.scene().cell_size;
-  geometry.face_layer = face_layer_used(sample, solver, face_layer);
+  geometry.face_layer = face_layer_in_rows(sample, geometry.cell_size, face_layer);
   // A scene without a projectile (a wave test) measures along the flight axis through its
   // middle; an exit wound needs a projectile that left.
   if (solver.projectile() < 0)
