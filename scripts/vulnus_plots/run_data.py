@@ -92,6 +92,21 @@ def load_particles(path, fields=("positions", "reference_position", "failure", "
     return data
 
 
+def first_and_last_by_id(run, fields):
+    """The named datasets of the run's first and last particle outputs, each ordered by point
+    id (so a point's row can be found in the other by id), without their times; None when the
+    run has fewer than two outputs."""
+    files = run.particle_files()
+    if len(files) < 2:
+        return None
+    outputs = []
+    for path in (files[0], files[-1]):
+        data = load_particles(path, fields)
+        order = np.argsort(data["id"])
+        outputs.append({name: values[order] for name, values in data.items() if name != "time"})
+    return outputs
+
+
 def cell_size(deck, default=1e-3):
     """Grid/Cell size of the deck (m); `default` when absent."""
     try:
