@@ -115,13 +115,32 @@ def cell_size(deck, default=1e-3):
         return default
 
 
+def body_names(deck):
+    """Scene/Bodies in order (a body's index is its material_id)."""
+    return [b.strip() for b in deck.get("Scene/Bodies", "").split(",") if b.strip()]
+
+
+def is_projectile(deck, body):
+    return deck.get("Body %s/Projectile" % body, "false").lower() == "true"
+
+
+def projectile_body(deck):
+    """Name of the deck's first projectile body, or None."""
+    return next((body for body in body_names(deck) if is_projectile(deck, body)), None)
+
+
 def target_body_index(deck):
     """Index (material_id) of the tissue body: the body named 'slab', else the first body
     that is not a projectile, else 0."""
-    bodies = [b.strip() for b in deck.get("Scene/Bodies", "").split(",") if b.strip()]
+    bodies = body_names(deck)
     if "slab" in bodies:
         return bodies.index("slab")
     for index, body in enumerate(bodies):
-        if deck.get("Body %s/Projectile" % body, "false").lower() != "true":
+        if not is_projectile(deck, body):
             return index
     return 0
+
+
+def deck_vector(deck, entry, default="0, 0, 0"):
+    """A deck entry of comma-separated numbers as a numpy array."""
+    return np.array([float(x) for x in deck.get(entry, default).replace(",", " ").split()])

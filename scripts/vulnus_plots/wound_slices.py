@@ -64,3 +64,35 @@ class FailedPoints:
         if values[-1] <= 0.0:
             return None
         return vectors[:, -1]
+
+    def fibre_frame(self, in_slice, fallback=None):
+        """The slice's points along and across its fibre (m), about the centroid of its failed
+        points; `fallback` (a unit 2-vector) stands for the fibre of an isotropic run, else
+        None is returned for one."""
+        fibre = self.slice_fibre(in_slice)
+        if fibre is None:
+            fibre = fallback
+        if fibre is None:
+            return None
+        r = self.reference[in_slice][:, self.plane]
+        r = r - r[self.failed[in_slice]].mean(axis=0)
+        return r @ fibre, r @ np.array([-fibre[1], fibre[0]])
+
+    def section_figures(self, in_slice, thickness, fallback_fibre=None):
+        """The failed cross-section of a slice `thickness` thick: equivalent diameter (m), and
+        length along and width across the fibre (4 sqrt of the second moment, a uniform
+        ellipse's axes) and their ratio, NaN under 3 failed points or without a fibre; and
+        the slice's fibre frame (fibre_frame) or None."""
+        failed = self.failed[in_slice]
+        n = int(failed.sum())
+        area = n * self.spacing ** 3 / thickness
+        figures = {"diameter": np.sqrt(4.0 * area / np.pi) if n else 0.0,
+                   "along": float("nan"), "across": float("nan"), "aspect": float("nan")}
+        frame = self.fibre_frame(in_slice, fallback_fibre) if n >= 3 else None
+        if frame is not None:
+            along, across = frame
+            figures["along"] = 4.0 * np.sqrt(np.mean(along[failed] ** 2))
+            figures["across"] = 4.0 * np.sqrt(np.mean(across[failed] ** 2))
+            if figures["across"] > 0.0:
+                figures["aspect"] = figures["along"] / figures["across"]
+        return figures, frame
