@@ -1,18 +1,19 @@
-// Volumetric locking and its cure in MPM and in the far field: the period of the
-// divergence-free shear mode (shear_mode.h) against its analytic value, at bulk:shear 1e2, 1e4
-// and 1e6, on 10 and 20 cells per side, with each point's own J and with the cell's; then the
-// far field's thick cylinder (lame_cylinder.h) against Lame's solution under refinement: the
-// errors of displacement, pressure and stresses with the observed order of each halving.
+// Volumetric locking and its cure in MPM and in the far field: the period and the pressure
+// of the roller square's eigenmodes (square_modes.h; shear: divergence-free, no pressure;
+// dilatation: the pressure wave) against their analytic values, at bulk:shear 1e2, 1e4 and
+// 1e6, with each point's own J and with the cell's; then the far field's thick cylinder
+// (lame_cylinder.h) against Lame's solution under refinement: the errors of displacement,
+// pressure and stresses with the observed order of each halving.
 // Usage: locking_benchmark [--ratios 1e2,1e4,1e6] [--quick] (quick: 1e4 only)
-//                          [--only shear|lame]
+//                          [--only modes|lame] [--modes shear,dilatation] [--cells 10,20]
 #include "benchmarks/locking/lame_cylinder.h"
-#include "benchmarks/locking/shear_mode.h"
+#include "benchmarks/locking/square_modes.h"
 
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
 #include <cstdio>
-#include <cstring>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,33 +22,66 @@ using namespace vulnus;
 
 namespace
 {
-void shear_mode_table(const std::vector<double>& ratios)
+/// Each method on each grid in turn; the order of an error is log2 of its ratio between
+/// successive halvings of the cell.
+void square_mode_table(const std::vector<double>& ratios,
+                       const std::vector<verification::SquareMode>& modes,
+                       const std::vector<unsigned>& cell_counts)
 {
-  std::printf("Shear mode: the period against the analytic one\n");
-  std::printf("%-9s %-8s %-6s %5s %12s %12s %9s %9s\n", "method", "K/mu", "J", "cells", "T/T_exact",
-              "error", "steps", "seconds");
-  auto row = [](const char* method, double ratio, bool averaging, unsigned cells,
-                const verification::ShearModeResult& r)
+  using verification::SquareMode;
+  using verification::SquareModeResult;
+  std::printf("Square modes: the period and the pressure at T/4 against the analytic ones\n");
+  std::printf("p error: cells' mean pressure against the exact one at their centres; "
+              "point p error (MPM): each point's\n");
+  std::printf("%-9s %-10s %-8s %-5s %5s %10s %10s %6s %10s %6s %10s %6s %8s %8s\n", "method",
+              "mode", "K/mu", "J", "cells", "T/T_exact", "T error", "order", "p error", "order",
+              "point p", "order", "steps", "seconds");
+  using Run = std::function<SquareModeResult(SquareMode, unsigned, double, bool)>;
+  auto fe = [](fem::TimeIntegrator integrator, bool one_point) -> Run
   {
-    std::printf("%-9s %-8.0e %-6s %5u %12.5f %12.2e %9lu %9.2f\n", method, ratio,
-                averaging ? "cell" : "own", cells, r.period_ratio, std::abs(r.period_ratio - 1.0),
-                r.steps, r.seconds);
-    std::fflush(stdout);
+    return [=](SquareMode mode, unsigned cells, double ratio, bool averaging)
+    { return verification::fe_square_mode(mode, cells, ratio, averaging, integrator, one_point); };
+  };
+  const std::vector<std::pair<const char*, Run>> methods = {
+      {"FE expl", fe(fem::TimeIntegrator::central_difference, false)},
+      {"FE 1pt", fe(fem::TimeIntegrator::central_difference, true)},
+      {"FE Newm", fe(fem::TimeIntegrator::newmark, false)},
+      {"MPM", verification::mpm_square_mode}};
+  auto order = [](double coarse, double fine)
+  {
+    char text[16] = "";
+    if (coarse > 0 && fine > 0)
+      std::snprintf(text, sizeof text, "%.2f", std::log2(coarse / fine));
+    return std::string(text);
   };
   for (const double ratio : ratios)
-    for (const bool averaging : {false, true})
-      for (const unsigned cells : {10u, 20u})
-      {
-        row("FE expl", ratio, averaging, cells,
-            verification::fe_shear_mode(cells, ratio, averaging,
-                                        fem::TimeIntegrator::central_difference));
-        row("FE 1pt", ratio, averaging, cells,
-            verification::fe_shear_mode(cells, ratio, averaging,
-                                        fem::TimeIntegrator::central_difference, true));
-        row("FE Newm", ratio, averaging, cells,
-            verification::fe_shear_mode(cells, ratio, averaging, fem::TimeIntegrator::newmark));
-        row("MPM", ratio, averaging, cells, verification::mpm_shear_mode(cells, ratio, averaging));
-      }
+    for (const SquareMode mode : modes)
+      for (const auto& [name, run] : methods)
+        for (const bool averaging : {false, true})
+        {
+          SquareModeResult previous;
+          for (const unsigned cells : cell_counts)
+          {
+            const SquareModeResult r = run(mode, cells, ratio, averaging);
+            const double error = std::abs(r.period_ratio - 1.0);
+            const bool refined = previous.steps > 0;
+            auto order_of = [&](double coarse, double fine)
+            { return refined ? order(coarse, fine) : std::string(); };
+            char point_pressure[16] = "-";
+            if (r.point_pressure_error > 0)
+              std::snprintf(point_pressure, sizeof point_pressure, "%.2e", r.point_pressure_error);
+            std::printf(
+                "%-9s %-10s %-8.0e %-5s %5u %10.5f %10.2e %6s %10.2e %6s %10s %6s %8lu %8.2f\n",
+                name, mode == SquareMode::shear ? "shear" : "dilatation", ratio,
+                averaging ? "cell" : "own", cells, r.period_ratio, error,
+                order_of(std::abs(previous.period_ratio - 1.0), error).c_str(), r.pressure_error,
+                order_of(previous.pressure_error, r.pressure_error).c_str(), point_pressure,
+                order_of(previous.point_pressure_error, r.point_pressure_error).c_str(), r.steps,
+                r.seconds);
+            std::fflush(stdout);
+            previous = r;
+          }
+        }
 }
 
 /// Each variant on 4, 8, 16 (and 32) cells through the wall; the order of an error is
@@ -96,32 +130,74 @@ void lame_table(const std::vector<double>& ratios, const bool quick)
 }
 } // namespace
 
+namespace
+{
+std::vector<std::string> split(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream list(text);
+  for (std::string item; std::getline(list, item, ',');)
+    items.push_back(item);
+  return items;
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  using verification::SquareMode;
   std::vector<double> ratios = {1e2, 1e4, 1e6};
-  bool shear = true, lame = true, quick = false;
+  std::vector<SquareMode> modes = {SquareMode::shear, SquareMode::dilatation};
+  std::vector<unsigned> cells = {10, 20};
+  bool square = true, lame = true, quick = false;
   for (int i = 1; i < argc; ++i)
-    if (std::strcmp(argv[i], "--quick") == 0)
+  {
+    const std::string option = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (option == "--quick")
     {
       ratios = {1e4};
       quick = true;
     }
-    else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+    else if (option == "--only" && has_value)
     {
       const std::string which = argv[++i];
-      shear = which == "shear";
+      square = which == "modes";
       lame = which == "lame";
     }
-    else if (std::strcmp(argv[i], "--ratios") == 0 && i + 1 < argc)
+    else if (option == "--ratios" && has_value)
     {
       ratios.clear();
-      std::stringstream list(argv[++i]);
-      for (std::string item; std::getline(list, item, ',');)
+      for (const std::string& item : split(argv[++i]))
         ratios.push_back(std::stod(item));
     }
-  if (shear)
-    shear_mode_table(ratios);
+    else if (option == "--modes" && has_value)
+    {
+      modes.clear();
+      for (const std::string& item : split(argv[++i]))
+        if (item == "shear" || item == "dilatation")
+          modes.push_back(item == "shear" ? SquareMode::shear : SquareMode::dilatation);
+        else
+        {
+          std::fprintf(stderr, "locking_benchmark: --modes takes shear and dilatation, not %s\n",
+                       item.c_str());
+          return 2;
+        }
+    }
+    else if (option == "--cells" && has_value)
+    {
+      cells.clear();
+      for (const std::string& item : split(argv[++i]))
+        cells.push_back(static_cast<unsigned>(std::stoul(item)));
+    }
+    else
+    {
+      std::fprintf(stderr, "locking_benchmark: unknown option or missing value: %s\n", argv[i]);
+      return 2;
+    }
+  }
+  if (square)
+    square_mode_table(ratios, modes, cells);
   if (lame)
     lame_table(ratios, quick);
   return 0;
