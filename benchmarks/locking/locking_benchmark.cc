@@ -6,6 +6,7 @@
 // pressure and stresses with the observed order of each halving.
 // Usage: locking_benchmark [--ratios 1e2,1e4,1e6] [--quick] (quick: 1e4 only)
 //                          [--only modes|lame] [--modes shear,dilatation] [--cells 10,20]
+//                          [--strain 1e-4]
 #include "benchmarks/locking/lame_cylinder.h"
 #include "benchmarks/locking/square_modes.h"
 
@@ -26,27 +27,33 @@ namespace
 /// successive halvings of the cell.
 void square_mode_table(const std::vector<double>& ratios,
                        const std::vector<verification::SquareMode>& modes,
-                       const std::vector<unsigned>& cell_counts)
+                       const std::vector<unsigned>& cell_counts, const double strain)
 {
   using verification::SquareMode;
   using verification::SquareModeResult;
-  std::printf("Square modes: the period and the pressure at T/4 against the analytic ones\n");
-  std::printf("p error: cells' mean pressure against the exact one at their centres; "
-              "point p error (MPM): each point's\n");
-  std::printf("%-9s %-10s %-8s %-5s %5s %10s %10s %6s %10s %6s %10s %6s %8s %8s\n", "method",
-              "mode", "K/mu", "J", "cells", "T/T_exact", "T error", "order", "p error", "order",
-              "point p", "order", "steps", "seconds");
+  std::printf("Square modes at strain %g: the period and the pressure at T/4 against the "
+              "analytic ones\n",
+              strain);
+  std::printf("p error: cells' mean pressure against the exact one at their centres (rms, and "
+              "p mean: its signed mean); point p (MPM): each point's\n");
+  std::printf("%-9s %-10s %-8s %-5s %5s %10s %10s %6s %10s %6s %10s %10s %6s %8s %8s\n",
+              "method", "mode", "K/mu", "J", "cells", "T/T_exact", "T error", "order", "p error",
+              "order", "p mean", "point p", "order", "steps", "seconds");
   using Run = std::function<SquareModeResult(SquareMode, unsigned, double, bool)>;
-  auto fe = [](fem::TimeIntegrator integrator, bool one_point) -> Run
+  auto fe = [strain](fem::TimeIntegrator integrator, bool one_point) -> Run
   {
-    return [=](SquareMode mode, unsigned cells, double ratio, bool averaging)
-    { return verification::fe_square_mode(mode, cells, ratio, averaging, integrator, one_point); };
+    return [=](SquareMode mode, unsigned cells, double ratio, bool averaging) {
+      return verification::fe_square_mode(mode, cells, ratio, averaging, integrator, one_point,
+                                          strain);
+    };
   };
+  auto mpm = [strain](SquareMode mode, unsigned cells, double ratio, bool averaging)
+  { return verification::mpm_square_mode(mode, cells, ratio, averaging, strain); };
   const std::vector<std::pair<const char*, Run>> methods = {
       {"FE expl", fe(fem::TimeIntegrator::central_difference, false)},
       {"FE 1pt", fe(fem::TimeIntegrator::central_difference, true)},
       {"FE Newm", fe(fem::TimeIntegrator::newmark, false)},
-      {"MPM", verification::mpm_square_mode}};
+      {"MPM", mpm}};
   auto order = [](double coarse, double fine)
   {
     char text[16] = "";
@@ -71,11 +78,13 @@ void square_mode_table(const std::vector<double>& ratios,
             if (r.point_pressure_error > 0)
               std::snprintf(point_pressure, sizeof point_pressure, "%.2e", r.point_pressure_error);
             std::printf(
-                "%-9s %-10s %-8.0e %-5s %5u %10.5f %10.2e %6s %10.2e %6s %10s %6s %8lu %8.2f\n",
+                "%-9s %-10s %-8.0e %-5s %5u %10.5f %10.2e %6s %10.2e %6s %10.2e %10s %6s %8lu "
+                "%8.2f\n",
                 name, mode == SquareMode::shear ? "shear" : "dilatation", ratio,
                 averaging ? "cell" : "own", cells, r.period_ratio, error,
                 order_of(std::abs(previous.period_ratio - 1.0), error).c_str(), r.pressure_error,
-                order_of(previous.pressure_error, r.pressure_error).c_str(), point_pressure,
+                order_of(previous.pressure_error, r.pressure_error).c_str(),
+                r.mean_pressure_error, point_pressure,
                 order_of(previous.point_pressure_error, r.point_pressure_error).c_str(), r.steps,
                 r.seconds);
             std::fflush(stdout);
@@ -149,6 +158,7 @@ int main(int argc, char** argv)
   std::vector<double> ratios = {1e2, 1e4, 1e6};
   std::vector<SquareMode> modes = {SquareMode::shear, SquareMode::dilatation};
   std::vector<unsigned> cells = {10, 20};
+  double strain = 1e-4;
   bool square = true, lame = true, quick = false;
   for (int i = 1; i < argc; ++i)
   {
@@ -190,6 +200,8 @@ int main(int argc, char** argv)
       for (const std::string& item : split(argv[++i]))
         cells.push_back(static_cast<unsigned>(std::stoul(item)));
     }
+    else if (option == "--strain" && has_value)
+      strain = std::stod(argv[++i]);
     else
     {
       std::fprintf(stderr, "locking_benchmark: unknown option or missing value: %s\n", argv[i]);
@@ -197,7 +209,7 @@ int main(int argc, char** argv)
     }
   }
   if (square)
-    square_mode_table(ratios, modes, cells);
+    square_mode_table(ratios, modes, cells, strain);
   if (lame)
     lame_table(ratios, quick);
   return 0;

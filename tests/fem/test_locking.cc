@@ -38,11 +38,19 @@ void expect_locked_then_cured(const char* name, const SquareModeResult& locked,
 }
 } // namespace
 
+// The locked points' pressures are noise of K times their discrete volume change (measured
+// 49 times the shear stress amplitude at the points); the cell's J takes it below a fifth
+// (measured 0.127 on 10 cells; the rest is the second-order volume drift of docs/locking.md).
 TEST(Locking, MpmShearModeKeepsItsPeriodWithCellAveragedVolume)
 {
-  expect_locked_then_cured("MPM", verification::mpm_square_mode(shear, 10, 1e4, false),
-                           verification::mpm_square_mode(shear, 10, 1e4, true),
+  const SquareModeResult locked = verification::mpm_square_mode(shear, 10, 1e4, false);
+  const SquareModeResult coarse = verification::mpm_square_mode(shear, 10, 1e4, true);
+  expect_locked_then_cured("MPM", locked, coarse,
                            verification::mpm_square_mode(shear, 20, 1e4, true));
+  std::cout << "MPM pressure error at the points: own J " << locked.point_pressure_error
+            << ", cell J " << coarse.point_pressure_error << std::endl;
+  EXPECT_GT(locked.point_pressure_error, 10.0);
+  EXPECT_LT(coarse.point_pressure_error, 0.2);
 }
 
 TEST(Locking, FarFieldShearModeKeepsItsPeriodWithFBar)
