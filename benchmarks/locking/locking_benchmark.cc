@@ -6,7 +6,7 @@
 // pressure and stresses with the observed order of each halving.
 // Usage: locking_benchmark [--ratios 1e2,1e4,1e6] [--quick] (quick: 1e4 only)
 //                          [--only modes|lame] [--modes shear,dilatation] [--cells 10,20]
-//                          [--strain 1e-4]
+//                          [--strain 1e-4] [--transfer flip|apic|relaxed-apic] (MPM's)
 #include "benchmarks/locking/lame_cylinder.h"
 #include "benchmarks/locking/square_modes.h"
 
@@ -27,13 +27,17 @@ namespace
 /// successive halvings of the cell.
 void square_mode_table(const std::vector<double>& ratios,
                        const std::vector<verification::SquareMode>& modes,
-                       const std::vector<unsigned>& cell_counts, const double strain)
+                       const std::vector<unsigned>& cell_counts, const double strain,
+                       const mpm::VelocityTransfer transfer)
 {
   using verification::SquareMode;
   using verification::SquareModeResult;
-  std::printf("Square modes at strain %g: the period and the pressure at T/4 against the "
-              "analytic ones\n",
-              strain);
+  const char* transfer_name = transfer == mpm::VelocityTransfer::flip   ? "FLIP"
+                              : transfer == mpm::VelocityTransfer::apic ? "APIC"
+                                                                        : "relaxed APIC";
+  std::printf("Square modes at strain %g (MPM velocity transfer %s): the period and the "
+              "pressure at T/4 against the analytic ones\n",
+              strain, transfer_name);
   std::printf("p error: cells' mean pressure against the exact one at their centres (rms, and "
               "p mean: its signed mean); point p (MPM): each point's\n");
   std::printf("%-9s %-10s %-8s %-5s %5s %10s %10s %6s %10s %6s %10s %10s %6s %8s %8s\n",
@@ -47,8 +51,8 @@ void square_mode_table(const std::vector<double>& ratios,
                                           strain);
     };
   };
-  auto mpm = [strain](SquareMode mode, unsigned cells, double ratio, bool averaging)
-  { return verification::mpm_square_mode(mode, cells, ratio, averaging, strain); };
+  auto mpm = [strain, transfer](SquareMode mode, unsigned cells, double ratio, bool averaging)
+  { return verification::mpm_square_mode(mode, cells, ratio, averaging, strain, transfer); };
   const std::vector<std::pair<const char*, Run>> methods = {
       {"FE expl", fe(fem::TimeIntegrator::central_difference, false)},
       {"FE 1pt", fe(fem::TimeIntegrator::central_difference, true)},
@@ -159,6 +163,7 @@ int main(int argc, char** argv)
   std::vector<SquareMode> modes = {SquareMode::shear, SquareMode::dilatation};
   std::vector<unsigned> cells = {10, 20};
   double strain = 1e-4;
+  mpm::VelocityTransfer transfer = mpm::VelocityTransfer::flip;
   bool square = true, lame = true, quick = false;
   for (int i = 1; i < argc; ++i)
   {
@@ -202,6 +207,21 @@ int main(int argc, char** argv)
     }
     else if (option == "--strain" && has_value)
       strain = std::stod(argv[++i]);
+    else if (option == "--transfer" && has_value)
+    {
+      const std::string name = argv[++i];
+      if (name == "flip" || name == "apic" || name == "relaxed-apic")
+        transfer = name == "flip"   ? mpm::VelocityTransfer::flip
+                   : name == "apic" ? mpm::VelocityTransfer::apic
+                                    : mpm::VelocityTransfer::relaxed_apic;
+      else
+      {
+        std::fprintf(stderr,
+                     "locking_benchmark: --transfer takes flip, apic or relaxed-apic, not %s\n",
+                     name.c_str());
+        return 2;
+      }
+    }
     else
     {
       std::fprintf(stderr, "locking_benchmark: unknown option or missing value: %s\n", argv[i]);
@@ -209,7 +229,7 @@ int main(int argc, char** argv)
     }
   }
   if (square)
-    square_mode_table(ratios, modes, cells, strain);
+    square_mode_table(ratios, modes, cells, strain, transfer);
   if (lame)
     lame_table(ratios, quick);
   return 0;

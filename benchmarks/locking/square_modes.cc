@@ -103,7 +103,7 @@ void record_cell_errors(const std::vector<double>& errors, const double scale,
 
 SquareModeResult mpm_square_mode(const SquareMode mode, const unsigned int cells,
                                  const double bulk_over_shear, const bool averaging,
-                                 const double strain)
+                                 const double strain, const mpm::VelocityTransfer transfer)
 {
   const ExactMode exact{mode, bulk_over_shear * mu, strain};
   const double h = side / cells;
@@ -115,6 +115,7 @@ SquareModeResult mpm_square_mode(const SquareMode mode, const unsigned int cells
   scene.stop_when_projectile_exits = false;
   scene.cfl = 0.4;
   scene.cell_volume_averaging = averaging;
+  scene.velocity_transfer = transfer;
   for (auto& face : scene.domain_faces)
     face = mpm::FaceCondition::roller;
   scene.materials.push_back({"gel", verification_gel(bulk_over_shear)});

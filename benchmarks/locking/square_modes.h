@@ -13,6 +13,7 @@
 #pragma once
 
 #include "fem/fem_parameters.h"
+#include "mpm/scene_parameters.h"
 
 namespace vulnus::verification
 {
@@ -40,8 +41,10 @@ struct SquareModeResult
 
 /// MPM, linear shape functions, 2 x 2 x 2 points per cell, MUSL, CFL 0.4, a square of
 /// `cells` cells per side and two cells thick; with or without the cell-averaged volume change.
-SquareModeResult mpm_square_mode(SquareMode mode, unsigned int cells, double bulk_over_shear,
-                                 bool averaging, double strain = 1e-4);
+SquareModeResult
+mpm_square_mode(SquareMode mode, unsigned int cells, double bulk_over_shear, bool averaging,
+                double strain = 1e-4,
+                mpm::VelocityTransfer transfer = mpm::VelocityTransfer::flip);
 
 /// The FE far field (Q1, one cell thick), explicit at its CFL or Newmark at T/80; with or
 /// without the mean-dilatation F-bar; one_point: one point per cell with hourglass control
