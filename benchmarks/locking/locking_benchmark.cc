@@ -23,6 +23,41 @@ using namespace vulnus;
 
 namespace
 {
+/// log2 of an error's ratio between two successive halvings of the cell, as text; empty on
+/// the first grid or where an error is nil.
+std::string observed_order(const bool refined, const double coarse, const double fine)
+{
+  char text[16] = "";
+  if (refined && coarse > 0 && fine > 0)
+    std::snprintf(text, sizeof text, "%.2f", std::log2(coarse / fine));
+  return text;
+}
+
+struct TransferName
+{
+  const char* option;
+  const char* label;
+  mpm::VelocityTransfer transfer;
+};
+const TransferName transfer_names[] = {{"flip", "FLIP", mpm::VelocityTransfer::flip},
+                                       {"apic", "APIC", mpm::VelocityTransfer::apic},
+                                       {"relaxed-apic", "relaxed APIC",
+                                        mpm::VelocityTransfer::relaxed_apic}};
+
+const char* mode_name(const verification::SquareMode mode)
+{
+  return mode == verification::SquareMode::shear ? "shear" : "dilatation";
+}
+
+std::vector<std::string> split(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream list(text);
+  for (std::string item; std::getline(list, item, ',');)
+    items.push_back(item);
+  return items;
+}
+
 /// Each method on each grid in turn; the order of an error is log2 of its ratio between
 /// successive halvings of the cell.
 void square_mode_table(const std::vector<double>& ratios,
@@ -32,9 +67,10 @@ void square_mode_table(const std::vector<double>& ratios,
 {
   using verification::SquareMode;
   using verification::SquareModeResult;
-  const char* transfer_name = transfer == mpm::VelocityTransfer::flip   ? "FLIP"
-                              : transfer == mpm::VelocityTransfer::apic ? "APIC"
-                                                                        : "relaxed APIC";
+  const char* transfer_name = "";
+  for (const TransferName& t : transfer_names)
+    if (t.transfer == transfer)
+      transfer_name = t.label;
   std::printf("Square modes at strain %g (MPM velocity transfer %s): the period and the "
               "pressure at T/4 against the analytic ones\n",
               strain, transfer_name);
@@ -58,13 +94,6 @@ void square_mode_table(const std::vector<double>& ratios,
       {"FE 1pt", fe(fem::TimeIntegrator::central_difference, true)},
       {"FE Newm", fe(fem::TimeIntegrator::newmark, false)},
       {"MPM", mpm}};
-  auto order = [](double coarse, double fine)
-  {
-    char text[16] = "";
-    if (coarse > 0 && fine > 0)
-      std::snprintf(text, sizeof text, "%.2f", std::log2(coarse / fine));
-    return std::string(text);
-  };
   for (const double ratio : ratios)
     for (const SquareMode mode : modes)
       for (const auto& [name, run] : methods)
@@ -77,14 +106,14 @@ void square_mode_table(const std::vector<double>& ratios,
             const double error = std::abs(r.period_ratio - 1.0);
             const bool refined = previous.steps > 0;
             auto order_of = [&](double coarse, double fine)
-            { return refined ? order(coarse, fine) : std::string(); };
+            { return observed_order(refined, coarse, fine); };
             char point_pressure[16] = "-";
             if (r.point_pressure_error > 0)
               std::snprintf(point_pressure, sizeof point_pressure, "%.2e", r.point_pressure_error);
             std::printf(
                 "%-9s %-10s %-8.0e %-5s %5u %10.5f %10.2e %6s %10.2e %6s %10.2e %10s %6s %8lu "
                 "%8.2f\n",
-                name, mode == SquareMode::shear ? "shear" : "dilatation", ratio,
+                name, mode_name(mode), ratio,
                 averaging ? "cell" : "own", cells, r.period_ratio, error,
                 order_of(std::abs(previous.period_ratio - 1.0), error).c_str(), r.pressure_error,
                 order_of(previous.pressure_error, r.pressure_error).c_str(),
@@ -124,12 +153,7 @@ void lame_table(const std::vector<double>& ratios, const bool quick)
         const verification::LameResult r =
             verification::lame_cylinder(cells, ratio, v.averaging, v.degree);
         auto order = [&](double verification::LameResult::*error)
-        {
-          char text[16] = "";
-          if (cells > 4)
-            std::snprintf(text, sizeof text, "%.2f", std::log2(previous.*error / r.*error));
-          return std::string(text);
-        };
+        { return observed_order(cells > 4, previous.*error, r.*error); };
         std::printf("%-9s %-8.0e %5u %7llu %11.3e %6s %11.3e %6s %11.3e %6s %11.3e %11.5f %7.2f\n",
                     v.name, ratio, cells, r.cells, r.displacement_error,
                     order(&verification::LameResult::displacement_error).c_str(), r.pressure_error,
@@ -140,18 +164,6 @@ void lame_table(const std::vector<double>& ratios, const bool quick)
         previous = r;
       }
     }
-}
-} // namespace
-
-namespace
-{
-std::vector<std::string> split(const std::string& text)
-{
-  std::vector<std::string> items;
-  std::stringstream list(text);
-  for (std::string item; std::getline(list, item, ',');)
-    items.push_back(item);
-  return items;
 }
 } // namespace
 
@@ -190,14 +202,17 @@ int main(int argc, char** argv)
     {
       modes.clear();
       for (const std::string& item : split(argv[++i]))
-        if (item == "shear" || item == "dilatation")
-          modes.push_back(item == "shear" ? SquareMode::shear : SquareMode::dilatation);
-        else
+      {
+        for (const SquareMode known : {SquareMode::shear, SquareMode::dilatation})
+          if (item == mode_name(known))
+            modes.push_back(known);
+        if (modes.empty() || item != mode_name(modes.back()))
         {
           std::fprintf(stderr, "locking_benchmark: --modes takes shear and dilatation, not %s\n",
                        item.c_str());
           return 2;
         }
+      }
     }
     else if (option == "--cells" && has_value)
     {
@@ -210,10 +225,12 @@ int main(int argc, char** argv)
     else if (option == "--transfer" && has_value)
     {
       const std::string name = argv[++i];
-      if (name == "flip" || name == "apic" || name == "relaxed-apic")
-        transfer = name == "flip"   ? mpm::VelocityTransfer::flip
-                   : name == "apic" ? mpm::VelocityTransfer::apic
-                                    : mpm::VelocityTransfer::relaxed_apic;
+      const TransferName* found = nullptr;
+      for (const TransferName& t : transfer_names)
+        if (name == t.option)
+          found = &t;
+      if (found)
+        transfer = found->transfer;
       else
       {
         std::fprintf(stderr,

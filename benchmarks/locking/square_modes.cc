@@ -163,8 +163,9 @@ SquareModeResult mpm_square_mode(const SquareMode mode, const unsigned int cells
       const double pressure = -(p.stress[i][0] + p.stress[i][1] + p.stress[i][2]) / 3.0;
       point_error2 += std::pow(pressure - exact.pressure(x[0], x[1], solver.time()), 2);
       const double volume = p.reference_volume[i] * p.deformation_gradient[i].determinant();
-      cell_pressure[cell_index(x)] += volume * pressure;
-      cell_volume[cell_index(x)] += volume;
+      const std::size_t cell = cell_index(x);
+      cell_pressure[cell] += volume * pressure;
+      cell_volume[cell] += volume;
     }
     std::vector<double> errors(n_cells);
     for (std::size_t c = 0; c < n_cells; ++c)
