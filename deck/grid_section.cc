@@ -63,12 +63,14 @@ void declare_grid_section(EntryTable& table)
                 "midpoint F <- (I - dt L/2)^-1 (I + dt L/2) F (second order, exact for rigid "
                 "spin) or forward Euler F <- (I + dt L) F (first order: a spinning point "
                 "stretches by (1 + (w dt)^2)^(1/2) per step).");
-  table.declare("Volume averaging", "none", Patterns::Selection("none|cell"),
-                "Volumetric part of the points' deformation: none (each point its own J) or "
+  table.declare("Volume averaging", "none", Patterns::Selection("none|cell|grid flux"),
+                "Volumetric part of the points' deformation: none (each point its own J), "
                 "cell (F-bar: each step's volume change of a point is that of all the points of "
-                "its body in its cell, Coombs et al. 2018). cell removes the volumetric locking "
-                "of nearly incompressible tissue (bulk:shear 1e3 and more, water-stiff tissue "
-                "and gelatin); docs/locking.md.");
+                "its body in its cell, Coombs et al. 2018) or grid flux (as cell, with the "
+                "cell's volume change taken from the grid velocity's flux through its faces, so "
+                "that a confined body's points keep its cells' volume). cell and grid flux "
+                "remove the volumetric locking of nearly incompressible tissue (bulk:shear 1e3 "
+                "and more, water-stiff tissue and gelatin); docs/locking.md.");
   table.declare("Points leaving the grid", "stop", Patterns::Selection("stop|remove"),
                 "stop: a point leaving the grid ends the run as a blow-up (last good state "
                 "kept); remove: it is removed and its energy and momentum booked as outflow "
@@ -110,7 +112,9 @@ void parse_grid_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   scene.deformation_update = prm.get("Deformation update") == "forward Euler"
                                  ? mpm::DeformationUpdate::forward_euler
                                  : mpm::DeformationUpdate::midpoint;
-  scene.cell_volume_averaging = prm.get("Volume averaging") == "cell";
+  const std::string averaging = prm.get("Volume averaging");
+  scene.cell_volume_averaging = averaging != "none";
+  scene.cell_volume_from_grid_flux = averaging == "grid flux";
   scene.remove_points_leaving_grid = prm.get("Points leaving the grid") == "remove";
   prm.enter_subsection("Boundary conditions");
   for (unsigned int face = 0; face < 6; ++face)

@@ -242,7 +242,12 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                  }
                  if (!averaging)
                    continue;
-                 average_volume_changes(begin, end, particles, *averaging);
+                 if (averaging->from_grid_flux)
+                   impose_grid_flux_volume_changes(
+                       grid, {velocity_for_gradient, fields.data, n_bodies, b, dt, midpoint},
+                       begin, end, particles, *averaging);
+                 else
+                   average_volume_changes(begin, end, particles, *averaging);
                  if (!volumetric_rate && !criterion)
                    continue;
 #pragma omp parallel for schedule(static)

@@ -114,6 +114,9 @@ struct SceneParameters : scene::SceneDescription
   /// Each step's volume change of a point replaced by its cell's (mpm/volume_averaging.h):
   /// free of volumetric locking for nearly incompressible tissue.
   bool cell_volume_averaging = false;
+  /// With cell_volume_averaging: the cell's volume change from the grid velocity's flux
+  /// through its faces instead of its points' summed volumes.
+  bool cell_volume_from_grid_flux = false;
   double artificial_viscosity_linear = 0.0;    ///< bulk viscosity coefficients (0 = off)
   double artificial_viscosity_quadratic = 0.0;
   double max_time_step = 1.0;          ///< s, cap

@@ -347,6 +347,12 @@ void Solver::advance(const double cap)
   mark_active_nodes(particles, transfer, grid);
   n_active_last_step = grid.n_active();
   particles_to_grid(particles, grid, transfer, buffers, fields);
+  if (parameters.cell_volume_averaging && parameters.cell_volume_from_grid_flux)
+    for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+      if (!grid_settings.body_is_rigid[b] && !kinematics.skips(b))
+        pair_forces_with_grid_flux(grid, transfer, b, long(particles.begin_of(b)),
+                                   long(particles.end_of(b)), particles, fields,
+                                   volume_averaging);
   if (grid_settings.hold_compressed_surfaces)
     scatter_nodal_stress(particles, grid, transfer, buffers, fields);
   sum_node_data_with_neighbours();
@@ -404,6 +410,7 @@ void Solver::advance(const double cap)
   {
     failure_limit_flags.passed.resize(particles.size());
   }
+  volume_averaging.from_grid_flux = parameters.cell_volume_from_grid_flux;
   update_deformation_gradients_and_positions(grid, transfer, kinematics, fields,
                                              musl ? fields.velocity : fields.velocity_new,
                                              particles, volumetric_rate_or_null(),

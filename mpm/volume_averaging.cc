@@ -2,7 +2,10 @@
 #include "mpm/volume_averaging.h"
 
 #include "materials/material.h"
+#include "mpm/stencil.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace vulnus::mpm
@@ -38,10 +41,9 @@ void clear_cell_sums(VolumeAveraging& s)
     s.volume_old[key] = s.volume_new[key] = 0.0;
   s.touched.clear();
 }
-} // namespace
 
-void average_volume_changes(const long begin, const long end, Particles& particles,
-                            VolumeAveraging& s)
+void sum_cell_volumes(const long begin, const long end, const Particles& particles,
+                      VolumeAveraging& s)
 {
   clear_cell_sums(s);
   // Serial: two additions per point, cheaper than the threads' bookkeeping.
@@ -56,6 +58,37 @@ void average_volume_changes(const long begin, const long end, Particles& particl
     s.volume_old[key] += v0 * s.j_old[p];
     s.volume_new[key] += v0 * particles.deformation_gradient[p].determinant();
   }
+}
+
+/// Per cell of the points' present positions (debris left out): their summed volume into
+/// volume_old and, with `pressure`, its integral of the mean stress into volume_new.
+void sum_cells_where_points_are(const Grid& grid, const long begin, const long end,
+                                const Particles& particles, VolumeAveraging& s,
+                                const bool pressure)
+{
+  s.prepare(grid, particles.size());
+  clear_cell_sums(s);
+  for (long p = begin; p < end; ++p)
+  {
+    const std::int64_t key = particles.failure[p] == materials::total_failure
+                               ? -1
+                               : VolumeAveraging::cell_key(grid, particles.position[p]);
+    s.cell[p] = key;
+    if (key < 0)
+      continue;
+    if (s.volume_old[key] == 0.0)
+      s.touched.push_back(key);
+    const double volume =
+      particles.reference_volume[p] * particles.deformation_gradient[p].determinant();
+    s.volume_old[key] += volume;
+    if (pressure)
+      s.volume_new[key] += volume * particles.stress[p].head<3>().sum() / 3.0;
+  }
+}
+
+void scale_to_cell_ratios(const long begin, const long end, Particles& particles,
+                          const VolumeAveraging& s)
+{
 #pragma omp parallel for schedule(static)
   for (long p = begin; p < end; ++p)
   {
@@ -70,27 +103,82 @@ void average_volume_changes(const long begin, const long end, Particles& particl
       F *= std::cbrt(cell_ratio / own_ratio);
   }
 }
+
+/// Gradient of node `corner` (bits: +x, +y, +z) of a cell, averaged over the cell.
+Vector3 cell_mean_shape_gradient(const Grid& grid, const int corner)
+{
+  const int a = corner & 1, b = (corner >> 1) & 1, c = (corner >> 2) & 1;
+  return 0.25 * grid.inverse_cell_size() * Vector3(2.0 * a - 1.0, 2.0 * b - 1.0, 2.0 * c - 1.0);
+}
+
+std::int64_t corner_key(const Grid& grid, const std::array<int, 3>& ijk, const int corner)
+{
+  return grid.node_key(ijk[0] + (corner & 1), ijk[1] + ((corner >> 1) & 1),
+                       ijk[2] + ((corner >> 2) & 1));
+}
+
+/// Whether a cell's points, of summed volume `volume`, fill enough of it for the grid flux.
+bool filled(const Grid& grid, const double volume)
+{
+  return volume >= VolumeAveraging::grid_flux_min_fill * std::pow(grid.cell_size(), 3);
+}
+
+/// The cell's mean velocity gradient (its faces' flux), or false where one of its nodes
+/// carries no velocity of the body.
+bool cell_mean_gradient(const Grid& grid, const NodalVelocities& nodal, const std::int64_t key,
+                        Tensor2& L)
+{
+  const auto ijk = grid.node_ijk(key);
+  L.setZero();
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const std::int32_t slot = grid.slot(corner_key(grid, ijk, corner));
+    if (slot < 0)
+      return false;
+    const std::size_t e = std::size_t(slot) * nodal.n_bodies + nodal.body;
+    if (!(nodal.node_data[e].mass > 0.0))
+      return false;
+    L.noalias() += nodal.velocity[e] * cell_mean_shape_gradient(grid, corner).transpose();
+  }
+  return true;
+}
+} // namespace
+
+void average_volume_changes(const long begin, const long end, Particles& particles,
+                            VolumeAveraging& s)
+{
+  sum_cell_volumes(begin, end, particles, s);
+  scale_to_cell_ratios(begin, end, particles, s);
+}
+
+void impose_grid_flux_volume_changes(const Grid& grid, const NodalVelocities& nodal,
+                                     const long begin, const long end, Particles& particles,
+                                     VolumeAveraging& s)
+{
+  sum_cell_volumes(begin, end, particles, s);
+  const double dt = nodal.time_step;
+  const long n_cells = long(s.touched.size());
+#pragma omp parallel for schedule(static)
+  for (long c = 0; c < n_cells; ++c)
+  {
+    const std::int64_t key = s.touched[c];
+    Tensor2 L;
+    if (!filled(grid, s.volume_old[key]) || !cell_mean_gradient(grid, nodal, key, L))
+      continue;
+    const Tensor2 I = Tensor2::Identity();
+    const double ratio = nodal.midpoint
+                           ? (I + (0.5 * dt) * L).determinant() / (I - (0.5 * dt) * L).determinant()
+                           : (I + dt * L).determinant();
+    s.volume_new[key] = ratio * s.volume_old[key];
+  }
+  scale_to_cell_ratios(begin, end, particles, s);
+}
+
 void average_cell_pressures(const Grid& grid, const long begin, const long end,
                             Particles& particles, VolumeAveraging& s)
 {
-  s.prepare(grid, particles.size());
-  clear_cell_sums(s);
   // volume_old: the cell's volume, volume_new: its integral of the pressure.
-  for (long p = begin; p < end; ++p)
-  {
-    const std::int64_t key = particles.failure[p] == materials::total_failure
-                               ? -1
-                               : VolumeAveraging::cell_key(grid, particles.position[p]);
-    s.cell[p] = key;
-    if (key < 0)
-      continue;
-    if (s.volume_old[key] == 0.0)
-      s.touched.push_back(key);
-    const double volume =
-      particles.reference_volume[p] * particles.deformation_gradient[p].determinant();
-    s.volume_old[key] += volume;
-    s.volume_new[key] += volume * particles.stress[p].head<3>().sum() / 3.0;
-  }
+  sum_cells_where_points_are(grid, begin, end, particles, s, true);
 #pragma omp parallel for schedule(static)
   for (long p = begin; p < end; ++p)
   {
@@ -100,5 +188,53 @@ void average_cell_pressures(const Grid& grid, const long begin, const long end,
     const double change = s.volume_new[key] / s.volume_old[key] - particles.stress[p].head<3>().sum() / 3.0;
     particles.stress[p].head<3>().array() += change;
   }
+}
+
+void pair_forces_with_grid_flux(const Grid& grid, const TransferSettings& transfer,
+                                const std::size_t body, const long begin, const long end,
+                                const Particles& particles, GridFields& fields,
+                                VolumeAveraging& s)
+{
+  // The cells and volumes the deformation update will sum (the same points, positions and J).
+  sum_cells_where_points_are(grid, begin, end, particles, s, false);
+  const std::size_t n_bodies = fields.n_bodies;
+  auto entry = [&](const std::int32_t slot) -> NodeBodyData&
+  { return fields.data[std::size_t(slot) * n_bodies + body]; };
+  const double lp = transfer.half_size_cells[body];
+  // Serial: neighbouring cells share nodes.
+  with_shape(transfer.shape,
+             [&](auto shape_constant)
+             {
+               constexpr ShapeFunction shape = decltype(shape_constant)::value;
+               for (long p = begin; p < end; ++p)
+               {
+                 const std::int64_t key = s.cell[p];
+                 if (key < 0 || !filled(grid, s.volume_old[key]))
+                   continue;
+                 const auto ijk = grid.node_ijk(key);
+                 std::array<std::int32_t, 8> slots;
+                 bool reached = true;
+                 for (int corner = 0; corner < 8 && reached; ++corner)
+                 {
+                   slots[corner] = grid.slot(corner_key(grid, ijk, corner));
+                   reached = slots[corner] >= 0 && entry(slots[corner]).mass > 0.0;
+                 }
+                 if (!reached)
+                   continue;
+                 const double volume_mean_stress =
+                     particles.reference_volume[p] *
+                     particles.deformation_gradient[p].determinant() *
+                     particles.stress[p].head<3>().sum() / 3.0;
+                 // The scatter added -V sigma_m grad w at each node of the point's stencil.
+                 auto remove_own = [&](const std::int64_t node, const double,
+                                       const Vector3& grad_w)
+                 { entry(grid.slot(node)).force += volume_mean_stress * grad_w; };
+                 for_each_node<shape>(grid, lp, particles.position[p],
+                                      particles.deformation_gradient[p], remove_own);
+                 for (int corner = 0; corner < 8; ++corner)
+                   entry(slots[corner]).force -=
+                       volume_mean_stress * cell_mean_shape_gradient(grid, corner);
+               }
+             });
 }
 } // namespace vulnus::mpm

@@ -6,10 +6,17 @@
 // isochoric part of F is untouched and the cell's total volume is unchanged. The points then
 // carry their cell's mean pressure into the grid forces, so that the forces' work is the
 // change of the stored energy (the variational F-bar: the cell's volume is what moves).
+// With from_grid_flux the cell's ratio is instead det(I + dt L) of the cell's mean velocity
+// gradient, whose trace is the grid velocity's exact flux through the cell's faces, so the
+// points of a confined body keep the volume of the cells they fill once they have moved; the
+// volumetric forces are then taken on the same mean gradient (their pair). Cells less than
+// half filled by their points keep the summed change: their far corners are light.
 #pragma once
 
 #include "mpm/grid.h"
+#include "mpm/grid_fields.h"
 #include "mpm/particles.h"
+#include "mpm/transfer_settings.h"
 
 #include <cstdint>
 #include <vector>
@@ -19,6 +26,11 @@ namespace vulnus::mpm
 /// Per-step scratch of the averaging, kept between steps to avoid reallocation.
 struct VolumeAveraging
 {
+  /// The cell's volume change: false, the summed change of its points' volumes (each from its
+  /// own velocity gradient); true, the flux of the grid velocity through the cell's faces.
+  bool from_grid_flux = false;
+  /// Grid flux applies to cells whose points fill at least this share of them.
+  static constexpr double grid_flux_min_fill = 0.5;
   /// Per point: J before the step, and the key of the cell it sat in at the start of the step
   /// (-1: not averaged, e.g. debris, whose law reads J alone, or a point outside the grid).
   std::vector<double> j_old;
@@ -36,6 +48,30 @@ struct VolumeAveraging
 /// Replaces the volume change of points [begin, end) (one body, F already updated, j_old and
 /// cell recorded by the deformation update) by the mean of their cells.
 void average_volume_changes(long begin, long end, Particles& particles, VolumeAveraging& scratch);
+/// Body `body`'s nodal velocities (indexed slot * n_bodies + body) and the step's update.
+struct NodalVelocities
+{
+  const std::vector<Vector3>& velocity;
+  const std::vector<NodeBodyData>& node_data;
+  std::size_t n_bodies, body;
+  double time_step;
+  bool midpoint;
+};
+/// average_volume_changes with each cell's volume ratio over the step taken from the
+/// cell-mean gradient L of the nodal velocities: det(I + dt L) or, with `midpoint`,
+/// det(I + dt L / 2) / det(I - dt L / 2). A cell less than grid_flux_min_fill full, or with a
+/// node where the body has no mass, keeps its points' summed change.
+void impose_grid_flux_volume_changes(const Grid& grid, const NodalVelocities& nodal, long begin,
+                                     long end, Particles& particles, VolumeAveraging& scratch);
+/// Grid flux's force pair, after the scatter: the volumetric part of the internal forces of
+/// points [begin, end) of body `body` (each point's mean stress on its own shape gradients)
+/// is moved onto its cell's mean gradient, so that those forces' power is the mean stress
+/// times the rate of the volume the grid flux gives. Debris, and points in a cell that
+/// impose_grid_flux_volume_changes leaves to the summed change, keep their own.
+void pair_forces_with_grid_flux(const Grid& grid, const TransferSettings& transfer,
+                                std::size_t body, long begin, long end,
+                                const Particles& particles, GridFields& fields,
+                                VolumeAveraging& scratch);
 /// Replaces the pressure of points [begin, end) (one body) by the volume-weighted mean
 /// pressure of the points of their cell (at their present positions), debris excepted.
 void average_cell_pressures(const Grid& grid, long begin, long end, Particles& particles,

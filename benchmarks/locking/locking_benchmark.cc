@@ -1,9 +1,9 @@
 // Volumetric locking and its cure in MPM and in the far field: the period and the pressure
 // of the roller square's eigenmodes (square_modes.h; shear: divergence-free, no pressure;
 // dilatation: the pressure wave) against their analytic values, at bulk:shear 1e2, 1e4 and
-// 1e6, with each point's own J and with the cell's; then the far field's thick cylinder
-// (lame_cylinder.h) against Lame's solution under refinement: the errors of displacement,
-// pressure and stresses with the observed order of each halving.
+// 1e6, with each point's own J, the cell's, and (MPM) the cell's grid flux; then the far
+// field's thick cylinder (lame_cylinder.h) against Lame's solution under refinement: the
+// errors of displacement, pressure and stresses with the observed order of each halving.
 // Usage: locking_benchmark [--ratios 1e2,1e4,1e6] [--quick] (quick: 1e4 only)
 //                          [--only modes|lame] [--modes shear,dilatation] [--cells 10,20]
 //                          [--strain 1e-4] [--transfer flip|apic|relaxed-apic] (MPM's)
@@ -79,51 +79,63 @@ void square_mode_table(const std::vector<double>& ratios,
   std::printf("%-9s %-10s %-8s %-5s %5s %10s %10s %6s %10s %6s %10s %10s %6s %8s %8s\n",
               "method", "mode", "K/mu", "J", "cells", "T/T_exact", "T error", "order", "p error",
               "order", "p mean", "point p", "order", "steps", "seconds");
-  using Run = std::function<SquareModeResult(SquareMode, unsigned, double, bool)>;
-  auto fe = [strain](fem::TimeIntegrator integrator, bool one_point) -> Run
+  using Run = std::function<SquareModeResult(SquareMode, unsigned, double)>;
+  struct Variant
   {
-    return [=](SquareMode mode, unsigned cells, double ratio, bool averaging) {
-      return verification::fe_square_mode(mode, cells, ratio, averaging, integrator, one_point,
-                                          strain);
-    };
+    const char* method;
+    const char* volume; ///< own J, the cell's J, or (MPM) the cell's grid flux
+    Run run;
   };
-  auto mpm = [strain, transfer](SquareMode mode, unsigned cells, double ratio, bool averaging)
-  { return verification::mpm_square_mode(mode, cells, ratio, averaging, strain, transfer); };
-  const std::vector<std::pair<const char*, Run>> methods = {
-      {"FE expl", fe(fem::TimeIntegrator::central_difference, false)},
-      {"FE 1pt", fe(fem::TimeIntegrator::central_difference, true)},
-      {"FE Newm", fe(fem::TimeIntegrator::newmark, false)},
-      {"MPM", mpm}};
+  std::vector<Variant> variants;
+  auto add_fe = [&](const char* method, fem::TimeIntegrator integrator, bool one_point)
+  {
+    for (const bool averaging : {false, true})
+      variants.push_back({method, averaging ? "cell" : "own",
+                          [=](SquareMode mode, unsigned cells, double ratio) {
+                            return verification::fe_square_mode(mode, cells, ratio, averaging,
+                                                                integrator, one_point, strain);
+                          }});
+  };
+  add_fe("FE expl", fem::TimeIntegrator::central_difference, false);
+  add_fe("FE 1pt", fem::TimeIntegrator::central_difference, true);
+  add_fe("FE Newm", fem::TimeIntegrator::newmark, false);
+  using verification::PointVolume;
+  const std::pair<const char*, PointVolume> point_volumes[] = {
+      {"own", PointVolume::own}, {"cell", PointVolume::cell}, {"flux", PointVolume::grid_flux}};
+  for (const auto& [label, volume] : point_volumes)
+    variants.push_back({"MPM", label,
+                        [=, volume = volume](SquareMode mode, unsigned cells, double ratio) {
+                          return verification::mpm_square_mode(mode, cells, ratio, volume,
+                                                               strain, transfer);
+                        }});
   for (const double ratio : ratios)
     for (const SquareMode mode : modes)
-      for (const auto& [name, run] : methods)
-        for (const bool averaging : {false, true})
+      for (const Variant& variant : variants)
+      {
+        SquareModeResult previous;
+        for (const unsigned cells : cell_counts)
         {
-          SquareModeResult previous;
-          for (const unsigned cells : cell_counts)
-          {
-            const SquareModeResult r = run(mode, cells, ratio, averaging);
-            const double error = std::abs(r.period_ratio - 1.0);
-            const bool refined = previous.steps > 0;
-            auto order_of = [&](double coarse, double fine)
-            { return observed_order(refined, coarse, fine); };
-            char point_pressure[16] = "-";
-            if (r.point_pressure_error > 0)
-              std::snprintf(point_pressure, sizeof point_pressure, "%.2e", r.point_pressure_error);
-            std::printf(
-                "%-9s %-10s %-8.0e %-5s %5u %10.5f %10.2e %6s %10.2e %6s %10.2e %10s %6s %8lu "
-                "%8.2f\n",
-                name, mode_name(mode), ratio,
-                averaging ? "cell" : "own", cells, r.period_ratio, error,
-                order_of(std::abs(previous.period_ratio - 1.0), error).c_str(), r.pressure_error,
-                order_of(previous.pressure_error, r.pressure_error).c_str(),
-                r.mean_pressure_error, point_pressure,
-                order_of(previous.point_pressure_error, r.point_pressure_error).c_str(), r.steps,
-                r.seconds);
-            std::fflush(stdout);
-            previous = r;
-          }
+          const SquareModeResult r = variant.run(mode, cells, ratio);
+          const double error = std::abs(r.period_ratio - 1.0);
+          const bool refined = previous.steps > 0;
+          auto order_of = [&](double coarse, double fine)
+          { return observed_order(refined, coarse, fine); };
+          char point_pressure[16] = "-";
+          if (r.point_pressure_error > 0)
+            std::snprintf(point_pressure, sizeof point_pressure, "%.2e", r.point_pressure_error);
+          std::printf(
+              "%-9s %-10s %-8.0e %-5s %5u %10.5f %10.2e %6s %10.2e %6s %10.2e %10s %6s %8lu "
+              "%8.2f\n",
+              variant.method, mode_name(mode), ratio, variant.volume, cells, r.period_ratio, error,
+              order_of(std::abs(previous.period_ratio - 1.0), error).c_str(), r.pressure_error,
+              order_of(previous.pressure_error, r.pressure_error).c_str(),
+              r.mean_pressure_error, point_pressure,
+              order_of(previous.point_pressure_error, r.point_pressure_error).c_str(), r.steps,
+              r.seconds);
+          std::fflush(stdout);
+          previous = r;
         }
+      }
 }
 
 /// Each variant on 4, 8, 16 (and 32) cells through the wall; the order of an error is

@@ -102,7 +102,7 @@ void record_cell_errors(const std::vector<double>& errors, const double scale,
 } // namespace
 
 SquareModeResult mpm_square_mode(const SquareMode mode, const unsigned int cells,
-                                 const double bulk_over_shear, const bool averaging,
+                                 const double bulk_over_shear, const PointVolume volume,
                                  const double strain, const mpm::VelocityTransfer transfer)
 {
   const ExactMode exact{mode, bulk_over_shear * mu, strain};
@@ -114,7 +114,8 @@ SquareModeResult mpm_square_mode(const SquareMode mode, const unsigned int cells
   scene.end_time = 10 * exact.period();
   scene.stop_when_projectile_exits = false;
   scene.cfl = 0.4;
-  scene.cell_volume_averaging = averaging;
+  scene.cell_volume_averaging = volume != PointVolume::own;
+  scene.cell_volume_from_grid_flux = volume == PointVolume::grid_flux;
   scene.velocity_transfer = transfer;
   for (auto& face : scene.domain_faces)
     face = mpm::FaceCondition::roller;

@@ -39,10 +39,19 @@ struct SquareModeResult
   double seconds = 0.0; ///< wall time of the run
 };
 
+/// The MPM points' volume change: each its own, their cell's summed (cell J) or their cell's
+/// grid-velocity flux (Grid/Volume averaging = grid flux).
+enum class PointVolume
+{
+  own,
+  cell,
+  grid_flux
+};
+
 /// MPM, linear shape functions, 2 x 2 x 2 points per cell, MUSL, CFL 0.4, a square of
-/// `cells` cells per side and two cells thick; with or without the cell-averaged volume change.
+/// `cells` cells per side and two cells thick.
 SquareModeResult
-mpm_square_mode(SquareMode mode, unsigned int cells, double bulk_over_shear, bool averaging,
+mpm_square_mode(SquareMode mode, unsigned int cells, double bulk_over_shear, PointVolume volume,
                 double strain = 1e-4,
                 mpm::VelocityTransfer transfer = mpm::VelocityTransfer::flip);
 

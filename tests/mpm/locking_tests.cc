@@ -1,7 +1,10 @@
 // The cell-averaged volume change of MPM points (F-bar): each cell's points share one volume
-// change, the cell keeps its volume and every point its isochoric part. The shear mode that
-// shows it cures locking is in tests/fem/test_locking.cc (it shares the far field's scene).
+// change (their summed one, or the flux of the grid velocity through the cell), and every
+// point keeps its isochoric part. The shear mode that shows it cures locking is in
+// tests/fem/test_locking.cc (it shares the far field's scene).
 #include "mpm/volume_averaging.h"
+
+#include "materials/material.h"
 
 #include <gtest/gtest.h>
 
@@ -53,4 +56,122 @@ TEST(MpmVolumeAveraging, PointsOfACellShareOneVolumeChangeAndKeepTheirShape)
                 points.deformation_gradient[b].determinant() / j_old[b], 1e-12);
   // The second cell's points (volumes 4 and 5 units) change by (4 x 1.02 + 5 x 0.99) / 9.
   EXPECT_NEAR(points.deformation_gradient[3].determinant(), (4 * 1.02 + 5 * 0.99) / 9, 1e-12);
+}
+
+// Grid flux: a cell's volume ratio is that of the mean velocity gradient of its nodes (the
+// flux through its faces), whatever its points' own gradients say. Four cells along x, nodal
+// velocities v = (a x^2 + b y, c y, 0): the cell mean of dv_x/dx is a (x0 + x1) exactly, so
+// the ratio is (1 + dt s)(1 + dt c) with s = a (x0 + x1) for forward Euler and
+// (1 + dt s / 2)(1 + dt c / 2) / ((1 - dt s / 2)(1 - dt c / 2)) for the midpoint rule (L is
+// upper triangular; the b y shear adds nothing). A cell less than half filled (the third)
+// keeps its point's own change; one with a massless node (the fourth) its points' sum.
+TEST(MpmVolumeAveraging, GridFluxGivesEachCellItsFacesVolumeChange)
+{
+  const double h = 1e-3, dt = 1e-6, a = 2e5, b = 50.0, c = -30.0;
+  mpm::Grid grid(Vector3::Zero(), Vector3(4 * h, h, h), h);
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 1; ++j)
+      for (int k = 0; k <= 1; ++k)
+        grid.mark(grid.node_key(i, j, k), 0);
+  ASSERT_EQ(grid.number_active_nodes(1), 20u);
+  std::vector<Vector3> velocity(20);
+  std::vector<mpm::NodeBodyData> node_data(20);
+  for (int slot = 0; slot < 20; ++slot)
+  {
+    const Vector3 x = grid.node_position(grid.active_keys()[slot]);
+    velocity[slot] = Vector3(a * x[0] * x[0] + b * x[1], c * x[1], 0.0);
+    node_data[slot].mass = x[0] > 3.5 * h ? 0.0 : 1e-6;
+  }
+  const Vector3 where[6] = {{0.2 * h, 0.5 * h, 0.5 * h}, {0.9 * h, 0.3 * h, 0.6 * h},
+                            {1.5 * h, 0.8 * h, 0.2 * h}, {2.5 * h, 0.5 * h, 0.5 * h},
+                            {3.4 * h, 0.5 * h, 0.5 * h}, {3.6 * h, 0.5 * h, 0.5 * h}};
+  const double volume[6] = {0.6e-9, 0.6e-9, 0.6e-9, 0.1e-9, 0.6e-9, 0.6e-9};
+  const Tensor2 shear = (Tensor2() << 1.0, 0.1, 0.0, 0.0, 1.0, 0.05, 0.0, 0.0, 1.0).finished();
+  const double own_ratio[6] = {1.001, 0.999, 1.002, 1.004, 1.003, 0.998};
+  for (const bool midpoint : {false, true})
+  {
+    mpm::Particles points;
+    points.start_body();
+    mpm::VolumeAveraging scratch;
+    scratch.prepare(grid, 6);
+    for (int p = 0; p < 6; ++p)
+    {
+      points.append(where[p], Vector3::Zero(), 1e-7, volume[p], Vector3::UnitX());
+      points.deformation_gradient[p] = std::cbrt(own_ratio[p]) * shear;
+      scratch.j_old[p] = 1.0;
+      scratch.cell[p] = mpm::VolumeAveraging::cell_key(grid, where[p]);
+    }
+    points.finish_body();
+    const mpm::NodalVelocities nodal{velocity, node_data, 1, 0, dt, midpoint};
+    mpm::impose_grid_flux_volume_changes(grid, nodal, 0, 6, points, scratch);
+    auto factor = [&](const double rate)
+    {
+      return midpoint ? (1 + 0.5 * dt * rate) / (1 - 0.5 * dt * rate) : 1 + dt * rate;
+    };
+    for (int p = 0; p < 3; ++p)
+    {
+      const double x0 = std::floor(where[p][0] / h) * h;
+      const double expected = factor(a * (x0 + x0 + h)) * factor(c);
+      const Tensor2& F = points.deformation_gradient[p];
+      EXPECT_NEAR(F.determinant(), expected, 1e-13) << p << (midpoint ? " midpoint" : "");
+      EXPECT_LT((F / std::cbrt(F.determinant()) - shear).norm(), 1e-12) << p;
+    }
+    EXPECT_NEAR(points.deformation_gradient[3].determinant(), 1.004, 1e-13);
+    for (int p = 4; p < 6; ++p)
+      EXPECT_NEAR(points.deformation_gradient[p].determinant(), (1.003 + 0.998) / 2, 1e-13) << p;
+  }
+}
+
+// Grid flux's force pair: moved onto the cell's mean gradient, the volumetric forces of a
+// cell's points do the work of the cell's flux. With the trilinear nodal velocities
+// v = (b x y, c y, 0) the correction's power is sigma_m sum_p V_p (div v(x_p) - div_cell):
+// each point's own divergence b y_p + c against the cell's b h / 2 + c. Its forces sum to
+// zero (momentum); the shear stress and a debris point keep their own forces. The cell's
+// points (det F = 1.02) fill 0.61 of it.
+TEST(MpmVolumeAveraging, GridFluxPairsTheVolumetricForcesWithTheCellsFlux)
+{
+  const double h = 1e-3, b = 2e5, c = -30.0, mean_stress = -3e6;
+  mpm::Grid grid(Vector3::Zero(), Vector3(2 * h, h, h), h);
+  mpm::Particles points;
+  points.start_body();
+  const Vector3 where[4] = {{0.2 * h, 0.5 * h, 0.5 * h}, {0.9 * h, 0.3 * h, 0.6 * h},
+                            {0.6 * h, 0.8 * h, 0.2 * h}, {1.5 * h, 0.5 * h, 0.5 * h}};
+  for (int p = 0; p < 4; ++p)
+  {
+    points.append(where[p], Vector3::Zero(), 1e-7, 1e-10 * (1 + p), Vector3::UnitX());
+    points.deformation_gradient[p] = std::cbrt(1.02) * Tensor2::Identity();
+    points.stress[p].head<3>().setConstant(mean_stress);
+    points.stress[p][3] = 1e5; // a shear stress the pair leaves alone
+  }
+  points.failure[3] = materials::total_failure;
+  points.finish_body();
+  for (int i = 0; i <= 2; ++i)
+    for (int j = 0; j <= 1; ++j)
+      for (int k = 0; k <= 1; ++k)
+        grid.mark(grid.node_key(i, j, k), 0);
+  ASSERT_EQ(grid.number_active_nodes(1), 12u);
+  mpm::GridFields fields;
+  fields.data.resize(12);
+  mpm::TransferSettings transfer;
+  transfer.half_size_cells = {0.25};
+  for (int slot = 0; slot < 12; ++slot)
+    fields.data[slot].mass = 1e-6;
+  mpm::VolumeAveraging scratch;
+  mpm::pair_forces_with_grid_flux(grid, transfer, 0, 0, 4, points, fields, scratch);
+  double power = 0.0;
+  Vector3 total = Vector3::Zero();
+  for (int slot = 0; slot < 12; ++slot)
+  {
+    const Vector3 x = grid.node_position(grid.active_keys()[slot]);
+    power += fields.data[slot].force.dot(Vector3(b * x[0] * x[1], c * x[1], 0.0));
+    total += fields.data[slot].force;
+    if (x[0] > 1.5 * h) // the debris point's cell alone reaches these nodes
+      EXPECT_EQ(fields.data[slot].force.norm(), 0.0) << slot;
+  }
+  double expected = 0.0;
+  for (int p = 0; p < 3; ++p)
+    expected += mean_stress * 1.02e-10 * (1 + p) * b * (where[p][1] - 0.5 * h);
+  ASSERT_GT(std::abs(expected), 1e-6);
+  EXPECT_NEAR(power, expected, 1e-9 * std::abs(expected));
+  EXPECT_LT(total.norm(), 1e-12);
 }
