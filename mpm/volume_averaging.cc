@@ -111,35 +111,44 @@ Vector3 cell_mean_shape_gradient(const Grid& grid, const int corner)
   return 0.25 * grid.inverse_cell_size() * Vector3(2.0 * a - 1.0, 2.0 * b - 1.0, 2.0 * c - 1.0);
 }
 
-std::int64_t corner_key(const Grid& grid, const std::array<int, 3>& ijk, const int corner)
-{
-  return grid.node_key(ijk[0] + (corner & 1), ijk[1] + ((corner >> 1) & 1),
-                       ijk[2] + ((corner >> 2) & 1));
-}
-
 /// Whether a cell's points, of summed volume `volume`, fill enough of it for the grid flux.
 bool filled(const Grid& grid, const double volume)
 {
   return volume >= VolumeAveraging::grid_flux_min_fill * std::pow(grid.cell_size(), 3);
 }
 
-/// The cell's mean velocity gradient (its faces' flux), or false where one of its nodes
-/// carries no velocity of the body.
+/// The entries (slot * n_bodies + body) of the cell's 8 corners, in cell_mean_shape_gradient's
+/// order; false where a corner is inactive or holds no mass of the body. The one rule for
+/// which cells the grid flux and its force pair apply to.
+bool corner_entries(const Grid& grid, const std::vector<NodeBodyData>& node_data,
+                    const std::size_t n_bodies, const std::size_t body, const std::int64_t key,
+                    std::array<std::size_t, 8>& entries)
+{
+  const auto ijk = grid.node_ijk(key);
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const std::int32_t slot = grid.slot(grid.node_key(
+        ijk[0] + (corner & 1), ijk[1] + ((corner >> 1) & 1), ijk[2] + ((corner >> 2) & 1)));
+    if (slot < 0)
+      return false;
+    entries[corner] = std::size_t(slot) * n_bodies + body;
+    if (!(node_data[entries[corner]].mass > 0.0))
+      return false;
+  }
+  return true;
+}
+
+/// The cell's mean velocity gradient (its faces' flux), or false where corner_entries is.
 bool cell_mean_gradient(const Grid& grid, const NodalVelocities& nodal, const std::int64_t key,
                         Tensor2& L)
 {
-  const auto ijk = grid.node_ijk(key);
+  std::array<std::size_t, 8> entries;
+  if (!corner_entries(grid, nodal.node_data, nodal.n_bodies, nodal.body, key, entries))
+    return false;
   L.setZero();
   for (int corner = 0; corner < 8; ++corner)
-  {
-    const std::int32_t slot = grid.slot(corner_key(grid, ijk, corner));
-    if (slot < 0)
-      return false;
-    const std::size_t e = std::size_t(slot) * nodal.n_bodies + nodal.body;
-    if (!(nodal.node_data[e].mass > 0.0))
-      return false;
-    L.noalias() += nodal.velocity[e] * cell_mean_shape_gradient(grid, corner).transpose();
-  }
+    L.noalias() +=
+        nodal.velocity[entries[corner]] * cell_mean_shape_gradient(grid, corner).transpose();
   return true;
 }
 } // namespace
@@ -185,7 +194,8 @@ void average_cell_pressures(const Grid& grid, const long begin, const long end,
     const std::int64_t key = s.cell[p];
     if (key < 0 || !(s.volume_old[key] > 0.0))
       continue;
-    const double change = s.volume_new[key] / s.volume_old[key] - particles.stress[p].head<3>().sum() / 3.0;
+    const double change =
+        s.volume_new[key] / s.volume_old[key] - particles.stress[p].head<3>().sum() / 3.0;
     particles.stress[p].head<3>().array() += change;
   }
 }
@@ -197,9 +207,6 @@ void pair_forces_with_grid_flux(const Grid& grid, const TransferSettings& transf
 {
   // The cells and volumes the deformation update will sum (the same points, positions and J).
   sum_cells_where_points_are(grid, begin, end, particles, s, false);
-  const std::size_t n_bodies = fields.n_bodies;
-  auto entry = [&](const std::int32_t slot) -> NodeBodyData&
-  { return fields.data[std::size_t(slot) * n_bodies + body]; };
   const double lp = transfer.half_size_cells[body];
   // Serial: neighbouring cells share nodes.
   with_shape(transfer.shape,
@@ -211,15 +218,8 @@ void pair_forces_with_grid_flux(const Grid& grid, const TransferSettings& transf
                  const std::int64_t key = s.cell[p];
                  if (key < 0 || !filled(grid, s.volume_old[key]))
                    continue;
-                 const auto ijk = grid.node_ijk(key);
-                 std::array<std::int32_t, 8> slots;
-                 bool reached = true;
-                 for (int corner = 0; corner < 8 && reached; ++corner)
-                 {
-                   slots[corner] = grid.slot(corner_key(grid, ijk, corner));
-                   reached = slots[corner] >= 0 && entry(slots[corner]).mass > 0.0;
-                 }
-                 if (!reached)
+                 std::array<std::size_t, 8> corners;
+                 if (!corner_entries(grid, fields.data, fields.n_bodies, body, key, corners))
                    continue;
                  const double volume_mean_stress =
                      particles.reference_volume[p] *
@@ -228,11 +228,14 @@ void pair_forces_with_grid_flux(const Grid& grid, const TransferSettings& transf
                  // The scatter added -V sigma_m grad w at each node of the point's stencil.
                  auto remove_own = [&](const std::int64_t node, const double,
                                        const Vector3& grad_w)
-                 { entry(grid.slot(node)).force += volume_mean_stress * grad_w; };
+                 {
+                   fields.data[std::size_t(grid.slot(node)) * fields.n_bodies + body].force +=
+                       volume_mean_stress * grad_w;
+                 };
                  for_each_node<shape>(grid, lp, particles.position[p],
                                       particles.deformation_gradient[p], remove_own);
                  for (int corner = 0; corner < 8; ++corner)
-                   entry(slots[corner]).force -=
+                   fields.data[corners[corner]].force -=
                        volume_mean_stress * cell_mean_shape_gradient(grid, corner);
                }
              });
