@@ -12,7 +12,8 @@
 
 namespace vulnus::mpm
 {
-void mark_active_nodes(const Particles& particles, const TransferSettings& settings, Grid& grid)
+void mark_active_nodes(const Particles& particles, const TransferSettings& settings, Grid& grid,
+                       const bool point_cells)
 {
   grid.clear_active_nodes();
   // Marks the blocks of each point's stencil (for_each_stencil_block); no weights needed.
@@ -38,9 +39,19 @@ void mark_active_nodes(const Particles& particles, const TransferSettings& setti
               for (int i = 0; i < width; ++i)
                 grid.mark(grid.node_key(first[0] + i, first[1] + j, first[2] + k), share);
         };
+        const bool mark_cells = point_cells && settings.shape == ShapeFunction::cpdi;
         for (long p = range.begin; p < range.end; ++p)
+        {
           for_each_stencil_block(grid, settings.shape, lp, particles.position[p],
                                  particles.deformation_gradient[p], mark_block);
+          if (mark_cells)
+          {
+            const Vector3 s = grid.to_cell_units(particles.position[p]);
+            mark_block({{first_stencil_node(s[0], 0.0), first_stencil_node(s[1], 0.0),
+                         first_stencil_node(s[2], 0.0)}},
+                       2);
+          }
+        }
       });
   grid.number_active_nodes(n_shares);
 }
@@ -50,19 +61,25 @@ namespace
 template <ShapeFunction shape, bool with_normals, bool affine>
 void scatter(const Particles& particles, const Grid& grid, const TransferSettings& settings,
              const std::size_t b, const ShareRange range, NodeBodyData* fields,
-             NodeBodyData* contested, const Vector3* point_force)
+             NodeBodyData* contested, const Vector3* point_force, const GridFluxPair* pair)
 {
   const std::size_t n_bodies = particles.n_bodies();
   const double lp = settings.half_size_cells[b];
+  // Sorted points come cell by cell: the pair's corner slots are looked up once per cell.
+  std::int64_t pair_cell = -1;
+  std::array<std::int32_t, 8> pair_slots{};
   for (long p = range.begin; p < range.end; ++p)
   {
     const double m = particles.mass[p];
     const Vector3 mv = m * particles.velocity[p];
     const Tensor2 mC = affine ? Tensor2(m * particles.affine_velocity[p].cast<double>())
                               : Tensor2::Zero();
-    const Tensor2 volume_stress =
+    Tensor2 volume_stress =
         (particles.reference_volume[p] * particles.deformation_gradient[p].determinant()) *
         full_tensor(particles.stress[p]);
+    const double paired = pair ? pair->volume_mean_stress[p] : 0.0;
+    if (paired != 0.0)
+      volume_stress.diagonal().array() -= paired;
     auto add = [&](const std::int64_t key, const double w, const Vector3& grad_w,
                    const Vector3& momentum)
     {
@@ -90,13 +107,27 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
       for_each_node<shape>(grid, lp, particles.position[p], particles.deformation_gradient[p],
                            [&](const std::int64_t key, const double w, const Vector3& grad_w)
                            { add(key, w, grad_w, mv); });
+    if (paired != 0.0)
+    {
+      if (pair->cell[p] != pair_cell)
+      {
+        pair_cell = pair->cell[p];
+        const std::array<std::int64_t, 8> corners = cell_corner_keys(grid, pair_cell);
+        for (int corner = 0; corner < 8; ++corner)
+          pair_slots[corner] = grid.slot(corners[corner]);
+      }
+      for (int corner = 0; corner < 8; ++corner)
+        scatter_target(grid, pair_slots[corner], n_bodies, b, fields, contested).force -=
+            paired * cell_mean_shape_gradient(grid, corner);
+    }
   }
 }
 } // namespace
 
 void particles_to_grid(const Particles& particles, const Grid& grid,
                        const TransferSettings& settings, ScatterBuffers& buffers,
-                       GridFields& fields, const Vector3* point_force)
+                       GridFields& fields, const Vector3* point_force,
+                       const GridFluxPair* pair)
 {
   fields.n_bodies = particles.n_bodies();
   fields.resize(grid.n_active());
@@ -112,19 +143,19 @@ void particles_to_grid(const Particles& particles, const Grid& grid,
                                    if (n && a)
                                      scatter<shape, true, true>(particles, grid, settings, b,
                                                                 range, direct, contested,
-                                                                point_force);
+                                                                point_force, pair);
                                    else if (n)
                                      scatter<shape, true, false>(particles, grid, settings, b,
                                                                  range, direct, contested,
-                                                                point_force);
+                                                                point_force, pair);
                                    else if (a)
                                      scatter<shape, false, true>(particles, grid, settings, b,
                                                                  range, direct, contested,
-                                                                point_force);
+                                                                point_force, pair);
                                    else
                                      scatter<shape, false, false>(particles, grid, settings, b,
                                                                   range, direct, contested,
-                                                                point_force);
+                                                                point_force, pair);
                                  });
              });
 }

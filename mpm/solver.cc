@@ -344,15 +344,26 @@ void Solver::advance(const double cap)
   }
   lap(timings.time_step);
 
-  mark_active_nodes(particles, transfer, grid);
+  const bool grid_flux = parameters.cell_volume_averaging && parameters.cell_volume_from_grid_flux;
+  auto flux_paired = [&](const std::size_t b)
+  { return grid_flux && !grid_settings.body_is_rigid[b] && !kinematics.skips(b); };
+  mark_active_nodes(particles, transfer, grid, grid_flux);
   n_active_last_step = grid.n_active();
-  particles_to_grid(particles, grid, transfer, buffers, fields);
-  if (parameters.cell_volume_averaging && parameters.cell_volume_from_grid_flux)
+  if (grid_flux)
+  {
+    volume_averaging.clear_pair(particles.size());
     for (std::size_t b = 0; b < particles.n_bodies(); ++b)
-      if (!grid_settings.body_is_rigid[b] && !kinematics.skips(b))
-        pair_forces_with_grid_flux(grid, transfer, b, long(particles.begin_of(b)),
-                                   long(particles.end_of(b)), particles, fields,
-                                   volume_averaging);
+      if (flux_paired(b))
+        prepare_grid_flux_pair(grid, long(particles.begin_of(b)), long(particles.end_of(b)),
+                               particles, volume_averaging);
+  }
+  const GridFluxPair pair{volume_averaging.paired_stress.data(), volume_averaging.cell.data()};
+  particles_to_grid(particles, grid, transfer, buffers, fields, nullptr,
+                    grid_flux ? &pair : nullptr);
+  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
+    if (flux_paired(b))
+      unpair_cells_without_mass(grid, transfer, b, long(particles.begin_of(b)),
+                                long(particles.end_of(b)), particles, fields, volume_averaging);
   if (grid_settings.hold_compressed_surfaces)
     scatter_nodal_stress(particles, grid, transfer, buffers, fields);
   sum_node_data_with_neighbours();

@@ -16,6 +16,26 @@
 
 namespace vulnus::mpm
 {
+/// Gradient of the linear shape function of node `corner` (bits: +x, +y, +z) of a cell,
+/// averaged over the cell.
+inline Vector3 cell_mean_shape_gradient(const Grid& grid, const int corner)
+{
+  const int a = corner & 1, b = (corner >> 1) & 1, c = (corner >> 2) & 1;
+  return 0.25 * grid.inverse_cell_size() * Vector3(2.0 * a - 1.0, 2.0 * b - 1.0, 2.0 * c - 1.0);
+}
+
+/// Keys of the 8 corners (in cell_mean_shape_gradient's order) of the cell whose lowest node
+/// is `cell`.
+inline std::array<std::int64_t, 8> cell_corner_keys(const Grid& grid, const std::int64_t cell)
+{
+  const auto ijk = grid.node_ijk(cell);
+  std::array<std::int64_t, 8> keys;
+  for (int corner = 0; corner < 8; ++corner)
+    keys[corner] = grid.node_key(ijk[0] + (corner & 1), ijk[1] + ((corner >> 1) & 1),
+                                 ijk[2] + ((corner >> 2) & 1));
+  return keys;
+}
+
 namespace detail
 {
 template <class Visitor>

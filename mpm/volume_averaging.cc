@@ -42,11 +42,13 @@ void clear_cell_sums(VolumeAveraging& s)
   s.touched.clear();
 }
 
-void sum_cell_volumes(const long begin, const long end, const Particles& particles,
-                      VolumeAveraging& s)
+/// Adds point_volume (and, with j_old, the volume at the start of the step) of points
+/// [begin, end) to their cells. Serial: two additions per point; the threads fill the
+/// per-point terms before.
+void add_point_volumes_to_cells(const long begin, const long end, VolumeAveraging& s,
+                                const double* volume_old_per_reference, const Particles& particles,
+                                const bool pressure)
 {
-  clear_cell_sums(s);
-  // Serial: two additions per point, cheaper than the threads' bookkeeping.
   for (long p = begin; p < end; ++p)
   {
     const std::int64_t key = s.cell[p];
@@ -54,36 +56,53 @@ void sum_cell_volumes(const long begin, const long end, const Particles& particl
       continue;
     if (s.volume_old[key] == 0.0)
       s.touched.push_back(key);
-    const double v0 = particles.reference_volume[p];
-    s.volume_old[key] += v0 * s.j_old[p];
-    s.volume_new[key] += v0 * particles.deformation_gradient[p].determinant();
+    if (volume_old_per_reference)
+    {
+      s.volume_old[key] += particles.reference_volume[p] * volume_old_per_reference[p];
+      s.volume_new[key] += s.point_volume[p];
+    }
+    else
+    {
+      s.volume_old[key] += s.point_volume[p];
+      if (pressure)
+        s.volume_new[key] += s.point_volume[p] * particles.stress[p].head<3>().sum() / 3.0;
+    }
   }
 }
 
+void sum_cell_volumes(const long begin, const long end, const Particles& particles,
+                      VolumeAveraging& s)
+{
+  clear_cell_sums(s);
+  s.point_volume.resize(particles.size());
+#pragma omp parallel for schedule(static)
+  for (long p = begin; p < end; ++p)
+    if (s.cell[p] >= 0)
+      s.point_volume[p] =
+        particles.reference_volume[p] * particles.deformation_gradient[p].determinant();
+  add_point_volumes_to_cells(begin, end, s, s.j_old.data(), particles, false);
+}
+
 /// Per cell of the points' present positions (debris left out): their summed volume into
-/// volume_old and, with `pressure`, its integral of the mean stress into volume_new.
+/// volume_old and, with `pressure`, its integral of the mean stress into volume_new; each
+/// point's cell into cell and its volume into point_volume.
 void sum_cells_where_points_are(const Grid& grid, const long begin, const long end,
                                 const Particles& particles, VolumeAveraging& s,
                                 const bool pressure)
 {
   s.prepare(grid, particles.size());
   clear_cell_sums(s);
+  s.point_volume.resize(particles.size());
+#pragma omp parallel for schedule(static)
   for (long p = begin; p < end; ++p)
   {
-    const std::int64_t key = particles.failure[p] == materials::total_failure
-                               ? -1
-                               : VolumeAveraging::cell_key(grid, particles.position[p]);
-    s.cell[p] = key;
-    if (key < 0)
-      continue;
-    if (s.volume_old[key] == 0.0)
-      s.touched.push_back(key);
-    const double volume =
+    s.cell[p] = particles.failure[p] == materials::total_failure
+                  ? -1
+                  : VolumeAveraging::cell_key(grid, particles.position[p]);
+    s.point_volume[p] =
       particles.reference_volume[p] * particles.deformation_gradient[p].determinant();
-    s.volume_old[key] += volume;
-    if (pressure)
-      s.volume_new[key] += volume * particles.stress[p].head<3>().sum() / 3.0;
   }
+  add_point_volumes_to_cells(begin, end, s, nullptr, particles, pressure);
 }
 
 void scale_to_cell_ratios(const long begin, const long end, Particles& particles,
@@ -104,13 +123,6 @@ void scale_to_cell_ratios(const long begin, const long end, Particles& particles
   }
 }
 
-/// Gradient of node `corner` (bits: +x, +y, +z) of a cell, averaged over the cell.
-Vector3 cell_mean_shape_gradient(const Grid& grid, const int corner)
-{
-  const int a = corner & 1, b = (corner >> 1) & 1, c = (corner >> 2) & 1;
-  return 0.25 * grid.inverse_cell_size() * Vector3(2.0 * a - 1.0, 2.0 * b - 1.0, 2.0 * c - 1.0);
-}
-
 /// Whether a cell's points, of summed volume `volume`, fill enough of it for the grid flux.
 bool filled(const Grid& grid, const double volume)
 {
@@ -124,11 +136,10 @@ bool corner_entries(const Grid& grid, const std::vector<NodeBodyData>& node_data
                     const std::size_t n_bodies, const std::size_t body, const std::int64_t key,
                     std::array<std::size_t, 8>& entries)
 {
-  const auto ijk = grid.node_ijk(key);
+  const std::array<std::int64_t, 8> keys = cell_corner_keys(grid, key);
   for (int corner = 0; corner < 8; ++corner)
   {
-    const std::int32_t slot = grid.slot(grid.node_key(
-        ijk[0] + (corner & 1), ijk[1] + ((corner >> 1) & 1), ijk[2] + ((corner >> 2) & 1)));
+    const std::int32_t slot = grid.slot(keys[corner]);
     if (slot < 0)
       return false;
     entries[corner] = std::size_t(slot) * n_bodies + body;
@@ -200,44 +211,97 @@ void average_cell_pressures(const Grid& grid, const long begin, const long end,
   }
 }
 
-void pair_forces_with_grid_flux(const Grid& grid, const TransferSettings& transfer,
-                                const std::size_t body, const long begin, const long end,
-                                const Particles& particles, GridFields& fields,
-                                VolumeAveraging& s)
+void VolumeAveraging::clear_pair(const std::size_t n_points)
+{
+  paired_stress.resize(n_points);
+  std::fill(paired_stress.begin(), paired_stress.end(), 0.0);
+}
+
+void prepare_grid_flux_pair(const Grid& grid, const long begin, const long end,
+                            const Particles& particles, VolumeAveraging& s)
 {
   // The cells and volumes the deformation update will sum (the same points, positions and J).
   sum_cells_where_points_are(grid, begin, end, particles, s, false);
+  s.paired_stress.resize(particles.size(), 0.0);
+#pragma omp parallel
+  {
+    // Sorted points come cell by cell: each cell's corners are looked up once.
+    std::int64_t last_cell = -1;
+    bool last_pairs = false;
+#pragma omp for schedule(static)
+    for (long p = begin; p < end; ++p)
+    {
+      s.paired_stress[p] = 0.0;
+      const std::int64_t key = s.cell[p];
+      if (key < 0)
+        continue;
+      if (key != last_cell)
+      {
+        last_cell = key;
+        const std::array<std::int64_t, 8> corners = cell_corner_keys(grid, key);
+        last_pairs = filled(grid, s.volume_old[key]) &&
+                     std::none_of(corners.begin(), corners.end(),
+                                  [&](const std::int64_t corner) { return grid.slot(corner) < 0; });
+      }
+      if (last_pairs)
+        s.paired_stress[p] = s.point_volume[p] * particles.stress[p].head<3>().sum() / 3.0;
+    }
+  }
+}
+
+long unpair_cells_without_mass(const Grid& grid, const TransferSettings& transfer,
+                               const std::size_t body, const long begin, const long end,
+                               const Particles& particles, GridFields& fields, VolumeAveraging& s)
+{
+  std::vector<long> unpaired;
+#pragma omp parallel
+  {
+    std::int64_t last_cell = -1;
+    bool last_has_mass = true;
+#pragma omp for schedule(static)
+    for (long p = begin; p < end; ++p)
+    {
+      if (s.paired_stress[p] == 0.0)
+        continue;
+      if (s.cell[p] != last_cell)
+      {
+        last_cell = s.cell[p];
+        std::array<std::size_t, 8> entries;
+        last_has_mass = corner_entries(grid, fields.data, fields.n_bodies, body, last_cell,
+                                       entries);
+      }
+      if (last_has_mass)
+        continue;
+#pragma omp critical(vulnus_unpair)
+      unpaired.push_back(p);
+    }
+  }
+  // The points in order, whatever the team size.
+  std::sort(unpaired.begin(), unpaired.end());
   const double lp = transfer.half_size_cells[body];
-  // Serial: neighbouring cells share nodes.
+  // Serial and rare: only where the body's points leave a corner of their cell without mass.
   with_shape(transfer.shape,
              [&](auto shape_constant)
              {
                constexpr ShapeFunction shape = decltype(shape_constant)::value;
-               for (long p = begin; p < end; ++p)
+               for (const long p : unpaired)
                {
-                 const std::int64_t key = s.cell[p];
-                 if (key < 0 || !filled(grid, s.volume_old[key]))
-                   continue;
-                 std::array<std::size_t, 8> corners;
-                 if (!corner_entries(grid, fields.data, fields.n_bodies, body, key, corners))
-                   continue;
-                 const double volume_mean_stress =
-                     particles.reference_volume[p] *
-                     particles.deformation_gradient[p].determinant() *
-                     particles.stress[p].head<3>().sum() / 3.0;
-                 // The scatter added -V sigma_m grad w at each node of the point's stencil.
-                 auto remove_own = [&](const std::int64_t node, const double,
-                                       const Vector3& grad_w)
+                 const double paired = s.paired_stress[p];
+                 auto force = [&](const std::int64_t node) -> Vector3&
                  {
-                   fields.data[std::size_t(grid.slot(node)) * fields.n_bodies + body].force +=
-                       volume_mean_stress * grad_w;
+                   const std::size_t slot = std::size_t(grid.slot(node));
+                   return fields.data[slot * fields.n_bodies + body].force;
                  };
+                 auto give_back = [&](const std::int64_t node, const double, const Vector3& grad)
+                 { force(node) -= paired * grad; };
                  for_each_node<shape>(grid, lp, particles.position[p],
-                                      particles.deformation_gradient[p], remove_own);
+                                      particles.deformation_gradient[p], give_back);
+                 const std::array<std::int64_t, 8> corners = cell_corner_keys(grid, s.cell[p]);
                  for (int corner = 0; corner < 8; ++corner)
-                   fields.data[corners[corner]].force -=
-                       volume_mean_stress * cell_mean_shape_gradient(grid, corner);
+                   force(corners[corner]) += paired * cell_mean_shape_gradient(grid, corner);
+                 s.paired_stress[p] = 0.0;
                }
              });
+  return long(unpaired.size());
 }
 } // namespace vulnus::mpm

@@ -9,8 +9,9 @@
 // With from_grid_flux the cell's ratio is instead det(I + dt L) of the cell's mean velocity
 // gradient, whose trace is the grid velocity's exact flux through the cell's faces, so the
 // points of a confined body keep the volume of the cells they fill once they have moved; the
-// volumetric forces are then taken on the same mean gradient (their pair). Cells less than
-// half filled by their points keep the summed change: their far corners are light.
+// volumetric forces are then taken on the same mean gradient in the scatter (their pair).
+// Cells less than half filled by their points keep the summed change: their far corners are
+// light.
 #pragma once
 
 #include "mpm/grid.h"
@@ -38,9 +39,16 @@ struct VolumeAveraging
   /// Per cell key of the box: summed volumes of the averaged points before and after the step.
   std::vector<double> volume_old, volume_new;
   std::vector<std::int64_t> touched;
+  /// Per point, its present volume (the sums' terms, filled by the threads).
+  std::vector<double> point_volume;
+  /// Per point, grid flux's force pair: its volume times its mean stress where the scatter
+  /// takes that force on its cell's mean corner gradients, else 0.
+  std::vector<double> paired_stress;
 
   /// Sizes the per-point arrays for n points and the per-cell ones for the grid.
   void prepare(const Grid& grid, std::size_t n_points);
+  /// Sizes paired_stress for n points and pairs none of them.
+  void clear_pair(std::size_t n_points);
   /// Key of the cell holding x (its lowest node's key), or -1 outside the node box.
   static std::int64_t cell_key(const Grid& grid, const Vector3& x);
 };
@@ -63,15 +71,20 @@ struct NodalVelocities
 /// node where the body has no mass, keeps its points' summed change.
 void impose_grid_flux_volume_changes(const Grid& grid, const NodalVelocities& nodal, long begin,
                                      long end, Particles& particles, VolumeAveraging& scratch);
-/// Grid flux's force pair, after the scatter: the volumetric part of the internal forces of
-/// points [begin, end) of body `body` (each point's mean stress on its own shape gradients)
-/// is moved onto its cell's mean gradient, so that those forces' power is the mean stress
-/// times the rate of the volume the grid flux gives. Debris, and points in a cell that
-/// impose_grid_flux_volume_changes leaves to the summed change, keep their own.
-void pair_forces_with_grid_flux(const Grid& grid, const TransferSettings& transfer,
-                                std::size_t body, long begin, long end,
-                                const Particles& particles, GridFields& fields,
-                                VolumeAveraging& scratch);
+/// Grid flux's force pair, before the scatter (after the node marking): for the points
+/// [begin, end) of one body in cells the grid flux applies to (filled, every corner active),
+/// the point's volume times its mean stress into scratch.paired_stress, else 0, and its cell
+/// into scratch.cell. particles_to_grid (GridFluxPair) then takes that part of the point's
+/// internal force on its cell's mean corner gradients instead of its own shape gradients, so
+/// the volumetric forces' power is the mean stress times the rate of the grid flux's volume.
+void prepare_grid_flux_pair(const Grid& grid, long begin, long end, const Particles& particles,
+                            VolumeAveraging& scratch);
+/// After the scatter: gives the paired points [begin, end) of body `body` whose cell has a
+/// corner where the body has no mass their own volumetric force back, since
+/// impose_grid_flux_volume_changes leaves such cells to the summed change. Returns how many.
+long unpair_cells_without_mass(const Grid& grid, const TransferSettings& transfer,
+                               std::size_t body, long begin, long end, const Particles& particles,
+                               GridFields& fields, VolumeAveraging& scratch);
 /// Replaces the pressure of points [begin, end) (one body) by the volume-weighted mean
 /// pressure of the points of their cell (at their present positions), debris excepted.
 void average_cell_pressures(const Grid& grid, long begin, long end, Particles& particles,
