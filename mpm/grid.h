@@ -80,6 +80,10 @@ public:
 
   /// Shares of points the active set was marked with.
   int n_point_shares() const { return shares; }
+  /// Whether the marking also covered the corners of each point's own cell (grid flux's pair
+  /// writes there; CPDI's stencil alone can miss them).
+  bool point_cells_marked() const { return cells_marked; }
+  void set_point_cells_marked(const bool marked) { cells_marked = marked; }
   /// Index of an active node among the contested ones, or -1 when one share alone touches it.
   std::int32_t contested_index(const std::int32_t slot) const { return contested_of_slot[slot]; }
   const std::vector<std::int32_t>& contested_slots() const { return contested; }
@@ -99,6 +103,7 @@ private:
   std::vector<std::int32_t> slot_of_key;
   std::vector<std::int64_t> active;
   int shares = 1;
+  bool cells_marked = false;
   std::vector<std::int32_t> contested_of_slot;
   std::vector<std::int32_t> contested;
 };

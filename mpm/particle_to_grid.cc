@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 namespace vulnus::mpm
 {
@@ -54,6 +55,7 @@ void mark_active_nodes(const Particles& particles, const TransferSettings& setti
         }
       });
   grid.number_active_nodes(n_shares);
+  grid.set_point_cells_marked(point_cells || settings.shape != ShapeFunction::cpdi);
 }
 
 namespace
@@ -129,6 +131,10 @@ void particles_to_grid(const Particles& particles, const Grid& grid,
                        GridFields& fields, const Vector3* point_force,
                        const GridFluxPair* pair)
 {
+  // A pair's corner outside the point's marked stencil could belong to another share.
+  if (pair && !grid.point_cells_marked())
+    throw std::logic_error("particles_to_grid: grid flux's force pair needs the nodes marked "
+                           "with the points' cells (mark_active_nodes with point_cells)");
   fields.n_bodies = particles.n_bodies();
   fields.resize(grid.n_active());
   with_shape(settings.shape,

@@ -82,6 +82,9 @@ void prepare_grid_flux_pair(const Grid& grid, long begin, long end, const Partic
 /// After the scatter: gives the paired points [begin, end) of body `body` whose cell has a
 /// corner where the body has no mass their own volumetric force back, since
 /// impose_grid_flux_volume_changes leaves such cells to the summed change. Returns how many.
+/// It reads the rank's own masses, before the neighbours' sums: a corner the rank's points
+/// give exactly zero weight but a neighbour's reach would stay unpaired here and get the flux
+/// there (linear shapes, every point of the cell on its lower face; not met in practice).
 long unpair_cells_without_mass(const Grid& grid, const TransferSettings& transfer,
                                std::size_t body, long begin, long end, const Particles& particles,
                                GridFields& fields, VolumeAveraging& scratch);

@@ -124,69 +124,81 @@ TEST(MpmVolumeAveraging, GridFluxGivesEachCellItsFacesVolumeChange)
 }
 
 // Grid flux's force pair: moved onto the cell's mean gradient, the volumetric forces of a
-// cell's points do the work of the cell's flux. With the trilinear nodal velocities
+// cell's points do the work of the cell's flux. With the bilinear nodal velocities
 // v = (b x y, c y, 0) the pair's power (the scatter with it less the scatter without it) is
-// sigma_m sum_p V_p (div v(x_p) - div_cell): each point's own divergence b y_p + c against the
-// cell's b h / 2 + c. Its forces sum to zero (momentum); the shear stress and a debris point
-// keep their own forces. The cell's points (det F = 1.02) fill 0.61 of it. Once a corner of
-// the cell holds none of the body's mass, the pair is undone and the plain scatter's forces
-// are back.
+// sigma_m sum_p V_p (div v(x_p) - div_cell): each point's own divergence b y_p + c (for uGIMP
+// and CPDI its mean over the point's domain, which is symmetric about x_p) against the cell's
+// b h / 2 + c. Its forces sum to zero (momentum); the shear stress, a debris point and a
+// point alone in a cell it fills to 0.1 keep their own forces. The first cell's points
+// (det F = 1.02) fill 0.61 of it. Once a corner of that cell holds none of the body's mass,
+// the pair is undone and the plain scatter's forces are back.
 TEST(MpmVolumeAveraging, GridFluxPairsTheVolumetricForcesWithTheCellsFlux)
 {
   const double h = 1e-3, b = 2e5, c = -30.0, mean_stress = -3e6;
-  mpm::Grid grid(Vector3::Zero(), Vector3(2 * h, h, h), h);
-  mpm::Particles points;
-  points.start_body();
-  const Vector3 where[4] = {{0.2 * h, 0.5 * h, 0.5 * h}, {0.9 * h, 0.3 * h, 0.6 * h},
-                            {0.6 * h, 0.8 * h, 0.2 * h}, {1.5 * h, 0.5 * h, 0.5 * h}};
-  for (int p = 0; p < 4; ++p)
+  const Vector3 where[5] = {{0.2 * h, 0.5 * h, 0.5 * h}, {0.9 * h, 0.3 * h, 0.6 * h},
+                            {0.6 * h, 0.8 * h, 0.2 * h}, {1.5 * h, 0.5 * h, 0.5 * h},
+                            {1.4 * h, 0.2 * h, 0.5 * h}};
+  const double reference_volume[5] = {1e-10, 2e-10, 3e-10, 4e-10, 1e-10 / 1.02};
+  // CPDI's domains are sheared, so its stencil is not the uGIMP box.
+  const Tensor2 shear = (Tensor2() << 1.0, 0.6, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0).finished();
+  for (const mpm::ShapeFunction shape :
+       {mpm::ShapeFunction::linear, mpm::ShapeFunction::gimp, mpm::ShapeFunction::cpdi})
   {
-    points.append(where[p], Vector3::Zero(), 1e-7, 1e-10 * (1 + p), Vector3::UnitX());
-    points.deformation_gradient[p] = std::cbrt(1.02) * Tensor2::Identity();
-    points.stress[p].head<3>().setConstant(mean_stress);
-    points.stress[p][3] = 1e5; // a shear stress the pair leaves alone
-  }
-  points.failure[3] = materials::total_failure;
-  points.finish_body();
-  mpm::TransferSettings transfer;
-  transfer.half_size_cells = {0.25};
-  mpm::mark_active_nodes(points, transfer, grid, true);
-  ASSERT_EQ(grid.n_active(), 12u);
-  mpm::ScatterBuffers buffers;
-  mpm::GridFields plain, paired;
-  mpm::particles_to_grid(points, grid, transfer, buffers, plain);
-  mpm::VolumeAveraging scratch;
-  scratch.clear_pair(4);
-  mpm::prepare_grid_flux_pair(grid, 0, 4, points, scratch);
-  const mpm::GridFluxPair pair{scratch.paired_stress.data(), scratch.cell.data()};
-  mpm::particles_to_grid(points, grid, transfer, buffers, paired, nullptr, &pair);
-  EXPECT_EQ(mpm::unpair_cells_without_mass(grid, transfer, 0, 0, 4, points, paired, scratch),
-            0);
-  double power = 0.0;
-  Vector3 total = Vector3::Zero();
-  for (int slot = 0; slot < 12; ++slot)
-  {
-    const Vector3 x = grid.node_position(grid.active_keys()[slot]);
-    const Vector3 pair_force = paired.data[slot].force - plain.data[slot].force;
-    power += pair_force.dot(Vector3(b * x[0] * x[1], c * x[1], 0.0));
-    total += pair_force;
-    if (x[0] > 1.5 * h) // the debris point's cell alone reaches these nodes
+    SCOPED_TRACE(static_cast<int>(shape));
+    mpm::Grid grid(Vector3::Zero(), Vector3(2 * h, h, h), h);
+    mpm::Particles points;
+    points.start_body();
+    for (int p = 0; p < 5; ++p)
     {
-      EXPECT_EQ(pair_force.norm(), 0.0) << slot;
+      points.append(where[p], Vector3::Zero(), 1e-7, reference_volume[p], Vector3::UnitX());
+      points.deformation_gradient[p] =
+        std::cbrt(1.02) * (shape == mpm::ShapeFunction::cpdi ? shear : Tensor2::Identity());
+      points.stress[p].head<3>().setConstant(mean_stress);
+      points.stress[p][3] = 1e5; // a shear stress the pair leaves alone
     }
-  }
-  double expected = 0.0;
-  for (int p = 0; p < 3; ++p)
-    expected += mean_stress * 1.02e-10 * (1 + p) * b * (where[p][1] - 0.5 * h);
-  ASSERT_GT(std::abs(expected), 1e-6);
-  EXPECT_NEAR(power, expected, 1e-9 * std::abs(expected));
-  EXPECT_LT(total.norm(), 1e-12);
+    points.failure[3] = materials::total_failure;
+    points.finish_body();
+    mpm::TransferSettings transfer;
+    transfer.shape = shape;
+    transfer.half_size_cells = {0.25};
+    mpm::mark_active_nodes(points, transfer, grid, true);
+    mpm::ScatterBuffers buffers;
+    mpm::GridFields plain, paired;
+    mpm::particles_to_grid(points, grid, transfer, buffers, plain);
+    mpm::VolumeAveraging scratch;
+    scratch.clear_pair(5);
+    mpm::prepare_grid_flux_pair(grid, 0, 5, points, scratch);
+    const mpm::GridFluxPair pair{scratch.paired_stress.data(), scratch.cell.data()};
+    mpm::particles_to_grid(points, grid, transfer, buffers, paired, nullptr, &pair);
+    EXPECT_EQ(mpm::unpair_cells_without_mass(grid, transfer, 0, 0, 5, points, paired, scratch),
+              0);
+    double power = 0.0;
+    Vector3 total = Vector3::Zero();
+    for (std::size_t slot = 0; slot < grid.n_active(); ++slot)
+    {
+      const Vector3 x = grid.node_position(grid.active_keys()[slot]);
+      const Vector3 pair_force = paired.data[slot].force - plain.data[slot].force;
+      power += pair_force.dot(Vector3(b * x[0] * x[1], c * x[1], 0.0));
+      total += pair_force;
+      // Linear: the second cell's points alone reach these nodes.
+      if (shape == mpm::ShapeFunction::linear && x[0] > 1.5 * h)
+      {
+        EXPECT_EQ(pair_force.norm(), 0.0) << slot;
+      }
+    }
+    double expected = 0.0;
+    for (int p = 0; p < 3; ++p)
+      expected += mean_stress * 1.02 * reference_volume[p] * b * (where[p][1] - 0.5 * h);
+    ASSERT_GT(std::abs(expected), 1e-6);
+    EXPECT_NEAR(power, expected, 1e-9 * std::abs(expected));
+    EXPECT_LT(total.norm(), 1e-12);
 
-  paired.data[grid.slot(grid.node_key(0, 1, 1))].mass = 0.0;
-  EXPECT_EQ(mpm::unpair_cells_without_mass(grid, transfer, 0, 0, 4, points, paired, scratch),
-            3);
-  for (int slot = 0; slot < 12; ++slot)
-    EXPECT_LT((paired.data[slot].force - plain.data[slot].force).norm(),
-              1e-12 * plain.data[slot].force.norm() + 1e-18)
-        << slot;
+    paired.data[grid.slot(grid.node_key(0, 1, 1))].mass = 0.0;
+    EXPECT_EQ(mpm::unpair_cells_without_mass(grid, transfer, 0, 0, 5, points, paired, scratch),
+              3);
+    for (std::size_t slot = 0; slot < grid.n_active(); ++slot)
+      EXPECT_LT((paired.data[slot].force - plain.data[slot].force).norm(),
+                1e-12 * plain.data[slot].force.norm() + 1e-18)
+          << slot;
+  }
 }
