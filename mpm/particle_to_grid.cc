@@ -45,13 +45,9 @@ void mark_active_nodes(const Particles& particles, const TransferSettings& setti
         {
           for_each_stencil_block(grid, settings.shape, lp, particles.position[p],
                                  particles.deformation_gradient[p], mark_block);
-          if (mark_cells)
-          {
-            const Vector3 s = grid.to_cell_units(particles.position[p]);
-            mark_block({{first_stencil_node(s[0], 0.0), first_stencil_node(s[1], 0.0),
-                         first_stencil_node(s[2], 0.0)}},
-                       2);
-          }
+          if (mark_cells) // the cell's corners are the linear stencil
+            for_each_stencil_block(grid, ShapeFunction::linear, 0.0, particles.position[p],
+                                   particles.deformation_gradient[p], mark_block);
         }
       });
   grid.number_active_nodes(n_shares);

@@ -42,12 +42,11 @@ void clear_cell_sums(VolumeAveraging& s)
   s.touched.clear();
 }
 
-/// Adds point_volume (and, with j_old, the volume at the start of the step) of points
-/// [begin, end) to their cells. Serial: two additions per point; the threads fill the
-/// per-point terms before.
-void add_point_volumes_to_cells(const long begin, const long end, VolumeAveraging& s,
-                                const double* volume_old_per_reference, const Particles& particles,
-                                const bool pressure)
+/// Adds old_term(p) and new_term(p) of points [begin, end) to their cells' volume_old and
+/// volume_new. Serial: two additions per point; the threads fill the per-point terms before.
+template <class OldTerm, class NewTerm>
+void add_to_cells(const long begin, const long end, VolumeAveraging& s, OldTerm&& old_term,
+                  NewTerm&& new_term)
 {
   for (long p = begin; p < end; ++p)
   {
@@ -56,17 +55,8 @@ void add_point_volumes_to_cells(const long begin, const long end, VolumeAveragin
       continue;
     if (s.volume_old[key] == 0.0)
       s.touched.push_back(key);
-    if (volume_old_per_reference)
-    {
-      s.volume_old[key] += particles.reference_volume[p] * volume_old_per_reference[p];
-      s.volume_new[key] += s.point_volume[p];
-    }
-    else
-    {
-      s.volume_old[key] += s.point_volume[p];
-      if (pressure)
-        s.volume_new[key] += s.point_volume[p] * particles.stress[p].head<3>().sum() / 3.0;
-    }
+    s.volume_old[key] += old_term(p);
+    s.volume_new[key] += new_term(p);
   }
 }
 
@@ -80,7 +70,9 @@ void sum_cell_volumes(const long begin, const long end, const Particles& particl
     if (s.cell[p] >= 0)
       s.point_volume[p] =
         particles.reference_volume[p] * particles.deformation_gradient[p].determinant();
-  add_point_volumes_to_cells(begin, end, s, s.j_old.data(), particles, false);
+  add_to_cells(
+      begin, end, s, [&](const long p) { return particles.reference_volume[p] * s.j_old[p]; },
+      [&](const long p) { return s.point_volume[p]; });
 }
 
 /// Per cell of the points' present positions (debris left out): their summed volume into
@@ -102,7 +94,10 @@ void sum_cells_where_points_are(const Grid& grid, const long begin, const long e
     s.point_volume[p] =
       particles.reference_volume[p] * particles.deformation_gradient[p].determinant();
   }
-  add_point_volumes_to_cells(begin, end, s, nullptr, particles, pressure);
+  add_to_cells(
+      begin, end, s, [&](const long p) { return s.point_volume[p]; },
+      [&](const long p)
+      { return pressure ? s.point_volume[p] * particles.stress[p].head<3>().sum() / 3.0 : 0.0; });
 }
 
 void scale_to_cell_ratios(const long begin, const long end, Particles& particles,
