@@ -2,22 +2,25 @@
 #include "analysis/mpm_summary.h"
 
 #include "analysis/wound_metrics.h"
+#include "mpm/body_builder.h"
 
 #include <algorithm>
 
 namespace vulnus::analysis
 {
 std::string projectile_fate(const mpm::ProjectileExit& exit, const bool through_exit_face,
-                            const double velocity_now, const double initial_speed)
+                            const mpm::ProjectilePenetration& penetration,
+                            const double velocity_now, const double stop_speed)
 {
   if (exit.recorded)
     return through_exit_face ? "left the target through its far side"
                              : "left the target sideways or backwards";
-  if (velocity_now < -0.01 * initial_speed)
-    return "moving backwards inside the target";
-  if (velocity_now <= 0.01 * initial_speed)
-    return "stopped in the target";
-  return "still inside the target";
+  if (!penetration.entered())
+    return "has not reached the target";
+  if (penetration.stopped())
+    return velocity_now < -stop_speed ? "stopped in the target, now moving backwards"
+                                      : "stopped in the target";
+  return "still moving into the target";
 }
 
 namespace
@@ -25,6 +28,25 @@ namespace
 const char* face_condition_name(const mpm::FaceCondition c)
 {
   return c == mpm::FaceCondition::fixed ? "fixed" : c == mpm::FaceCondition::roller ? "roller" : "free";
+}
+
+/// summary.json's condition of a domain face: "fixed (no body reached it)" for a support that
+/// gave no impulse and that no deformable body came within a cell of at the start
+/// (simulator/scene_warnings.cc warns of it before the run). Not for a hybrid's MPM zone, part
+/// of a body whose far field may hold the face.
+std::string support_condition(const mpm::Solver& solver, const int face,
+                              const mpm::Vector3& impulse)
+{
+  const mpm::SceneParameters& scene = solver.scene();
+  const std::string name = face_condition_name(scene.domain_faces[face]);
+  if (scene.domain_faces[face] == mpm::FaceCondition::free || impulse != mpm::Vector3::Zero() ||
+      solver.shared_nodes().partner != nullptr)
+    return name;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    if (!solver.body_material(b).is_rigid() &&
+        mpm::gap_to_domain_face(scene, scene.bodies[b], face) < scene.cell_size)
+      return name;
+  return name + " (no body reached it)";
 }
 
 /// A wound of fewer than three points has no shape: aspect ratio and axis are null. A face
@@ -72,7 +94,7 @@ nlohmann::json penetration_json(const mpm::ProjectilePenetration& p)
 double accounted_energy(const mpm::Solver& solver, const mpm::SceneDiagnostics& d)
 {
   return d.kinetic_energy + d.strain_energy + d.potential_energy + d.dissipated_energy +
-         solver.contact_dissipation() + solver.removed_energy();
+         solver.contact_dissipation() + solver.support_dissipation() + solver.removed_energy();
 }
 
 MomentumAudit mpm_momentum_audit(const mpm::Solver& solver, const mpm::SceneDiagnostics& d,
@@ -134,7 +156,8 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
     bullet["exit_velocity_m_s"] = exit.recorded ? nlohmann::json(speed) : nlohmann::json();
     bullet["velocity_now_m_s"] = b.velocity.dot(axis);
     bullet["fate"] = projectile_fate(exit, left_through_exit_face(sample, solver),
-                                     b.velocity.dot(axis), totals.projectile_initial_speed);
+                                     solver.penetration(), b.velocity.dot(axis),
+                                     solver.scene().projectile_stop_speed);
     bullet["kinetic_energy_lost_J"] = totals.projectile_initial_kinetic_energy - kinetic;
     bullet["max_von_mises_over_yield"] = solver.peak_von_mises_over_yield()[projectile];
     bullet["position_m"] = {b.centroid[0], b.centroid[1], b.centroid[2]};
@@ -154,6 +177,14 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
         {"contact_pressure_limit_Pa", hold.pressure_limit()},
         {"rotation_drift_m", held.rotation_drift},
         {"rotation_drift_limit_m", hold.drift_limit()}};
+    // A free rigid projectile only translates: the rotation its contact's moment would give.
+    if (const mpm::NeglectedRotation& rotation = solver.projectile_rotation(); rotation.active())
+      bullet["rotation_neglected"] = {
+        {"angle_rad", rotation.angle()},
+        {"drift_m", rotation.drift()},
+        {"drift_limit_m", rotation.drift_limit()},
+        {"exceeded_step", rotation.exceeded_step() >= 0 ? nlohmann::json(rotation.exceeded_step())
+                                                        : nlohmann::json()}};
     j["penetration"] = penetration_json(solver.penetration());
     // Fastest point of the other bodies over the run, against the projectile's initial speed.
     double fastest = 0.0;
@@ -178,7 +209,7 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
   j["target"] = {{"kinetic_energy_J", target_kinetic},
                  {"momentum_kg_m_s", {target_momentum[0], target_momentum[1], target_momentum[2]}}};
   for (int f = 0; f < 6; ++f)
-    j["supports"][box_face_name(f)] = {{"condition", face_condition_name(solver.scene().domain_faces[f])},
+    j["supports"][box_face_name(f)] = {{"condition", support_condition(solver, f, supports[f])},
                                     {"impulse_N_s", {supports[f][0], supports[f][1], supports[f][2]}}};
 
   const double initial = solver.initial_energy();
@@ -186,9 +217,11 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
                  {"kinetic_J", d.kinetic_energy},
                  {"strain_J", d.strain_energy},
                  {"potential_J", d.potential_energy},
-                 {"dissipated_J", d.dissipated_energy + solver.contact_dissipation()},
+                 {"dissipated_J", d.dissipated_energy + solver.contact_dissipation() +
+                                    solver.support_dissipation()},
                  {"dissipated_material_J", d.dissipated_energy},
                  {"dissipated_contact_J", solver.contact_dissipation()},
+                 {"dissipated_supports_J", solver.support_dissipation()},
                  {"outflow_J", solver.removed_energy()},
                  {"balance_error", relative_balance_error(accounted_energy(solver, d), initial)}};
   j["removed_points"] = solver.removed_points();

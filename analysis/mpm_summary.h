@@ -43,11 +43,13 @@ inline double relative_balance_error(const double energy, const double initial)
 /// (collect_wound_sample, complete on rank 0), `d`: the diagnostics over all ranks,
 /// `supports`: Solver::support_impulses (collective, so taken by the caller on every rank).
 /// What became of the projectile, in words (summary "fate"): left the target through its far
-/// side (the exit face of its path, `through_exit_face`), left it sideways or backwards,
-/// stopped in it (|v| <= 1 % of the initial speed along the flight), moving backwards inside
-/// it, or still inside it.
+/// side (the exit face of its path, `through_exit_face`), left it sideways or backwards, has
+/// not reached it, stopped in it (the penetration record's stop: at most the stop speed along
+/// the flight once inside, so `fate` and penetration.stopped agree), stopped and now moving
+/// backwards faster than the stop speed, or still moving into it.
 std::string projectile_fate(const mpm::ProjectileExit& exit, bool through_exit_face,
-                            double velocity_now, double initial_speed);
+                            const mpm::ProjectilePenetration& penetration, double velocity_now,
+                            double stop_speed);
 
 /// The MPM side's momentum audit: its bodies, what left its grid, its faces' supports,
 /// gravity and rigid drivers, and points added from elsewhere (the hybrid adds the far field).

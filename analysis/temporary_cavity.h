@@ -11,14 +11,17 @@
 namespace vulnus::analysis
 {
 /// Slices one `thickness` thick normal to the path (the projectile's initial mass centre along
-/// its initial velocity), from the target's entrance plane to its far side. In each slice and
-/// in each of `sectors` equal angular sectors around the path, the wall is the nearest point
-/// of the target that still carries stress (totally failed debris is not wall) to the path,
-/// less half a point spacing (a point's own extent). The cavity's area is the sum of the
+/// its initial velocity), from the path's entrance point on the target's surface to its exit
+/// point. In each slice and in each of `sectors` equal angular sectors around the path, the
+/// wall is the nearest point of the target that still carries stress (totally failed debris
+/// is not wall) to the path, less half a point spacing (a point's own extent); a point counts
+/// in every slice and sector within one point spacing of it, so that the wall does not jump
+/// out where the points of a bin have moved into its neighbour. The cavity's area is the sum of the
 /// sectors' discs, pi r_i^2 / sectors; its diameter the equivalent one, sqrt(4 A / pi). No
 /// wall is farther than the grid's boundary along the sector's middle direction, so a sector
 /// emptied to the edge (gelatin splashed out of the entrance) counts as open to the edge, not
-/// beyond it. For every slice the largest diameter over the samples
+/// beyond it; in a hybrid the far field's material begins where the MPM points end, and no
+/// wall is farther than their box. For every slice the largest diameter over the samples
 /// and its time are kept, beside the latest. Near the path a sector is narrower than the
 /// point spacing, so undisturbed material already measures about 2.7 point spacings: the
 /// first sample's largest diameter is kept as the measure's floor (resolution_floor()).
@@ -33,6 +36,10 @@ public:
     double diameter = 0.0;     ///< m, latest sample
     double max_diameter = 0.0; ///< m, largest sample
     double max_time = 0.0;     ///< s, when it was largest
+    /// Every sector held the target's material at the first sample: the slice lies inside
+    /// the target. Slices cut by an oblique face are not: they are left out of the largest
+    /// diameter and of the floor.
+    bool inside_target = true;
   };
 
   TemporaryCavity() = default;
@@ -45,7 +52,7 @@ public:
   bool active() const { return !slices.empty(); }
   const std::vector<Slice>& profile() const { return slices; }
   double slice_thickness() const { return thickness; }
-  /// The largest diameter of any slice, its depth and time.
+  /// The largest diameter of any slice inside the target, its depth and time.
   const Slice& largest() const;
   /// The largest diameter of the first sample (m): cavities below it are not resolved.
   double resolution_floor() const { return floor_diameter; }
@@ -61,8 +68,9 @@ private:
   double half_spacing = 0.0;
   double radius_cap = 0.0;
 
-  /// From the path to the grid's boundary along each sector's middle direction.
-  std::array<double, sectors> distances_to_the_grid_edge(const mpm::SceneParameters& scene) const;
+  /// From the path to the boundary of a box along each sector's middle direction.
+  std::array<double, sectors> distances_to_the_box(const mpm::Vector3& lower,
+                                                   const mpm::Vector3& upper) const;
   double floor_diameter = -1.0; ///< set by the first sample
   std::vector<Slice> slices;
   std::vector<double> nearest; ///< per slice and sector, this sample's wall distance

@@ -15,45 +15,6 @@ const char* box_face_name(const int face)
   return face >= 0 && face < 6 ? names[face] : "none";
 }
 
-PathThroughBox path_through_box(const Vector3& lower, const Vector3& upper, const Vector3& origin,
-                                const Vector3& direction)
-{
-  // Slab method: the path is inside the box between the last entry into and the first exit
-  // from the three pairs of parallel planes.
-  PathThroughBox path;
-  double t_in = -std::numeric_limits<double>::infinity();
-  double t_out = std::numeric_limits<double>::infinity();
-  for (int d = 0; d < 3; ++d)
-  {
-    if (std::abs(direction[d]) < 1e-12)
-    {
-      if (origin[d] < lower[d] || origin[d] > upper[d])
-        return path;
-      continue;
-    }
-    const bool forward = direction[d] > 0.0;
-    const double t_lower = (lower[d] - origin[d]) / direction[d];
-    const double t_upper = (upper[d] - origin[d]) / direction[d];
-    const double enter = forward ? t_lower : t_upper, leave = forward ? t_upper : t_lower;
-    if (enter > t_in)
-    {
-      t_in = enter;
-      path.entrance_face = 2 * d + (forward ? 0 : 1);
-    }
-    if (leave < t_out)
-    {
-      t_out = leave;
-      path.exit_face = 2 * d + (forward ? 1 : 0);
-    }
-  }
-  if (!(t_in < t_out) || path.entrance_face < 0 || path.exit_face < 0)
-    return PathThroughBox();
-  path.hits = true;
-  path.t_in = t_in;
-  path.t_out = t_out;
-  return path;
-}
-
 namespace
 {
 /// Totally failed points within `layer` inside `face` of the box.

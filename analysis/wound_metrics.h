@@ -12,6 +12,8 @@
 //    the path, against the distance along the path from the entrance point.
 #pragma once
 
+#include "mpm/target_path.h"
+
 #include <Eigen/Core>
 
 #include <array>
@@ -35,17 +37,8 @@ struct FaceWound
   Vector3 major_axis = Vector3::Zero(); ///< unit, in the face plane
 };
 
-/// Where a straight path (origin + t direction, direction unit) crosses a box.
-struct PathThroughBox
-{
-  bool hits = false;
-  int entrance_face = -1, exit_face = -1;
-  double t_in = 0.0, t_out = 0.0; ///< m along the path
-  double length() const { return hits ? t_out - t_in : 0.0; }
-};
-
-PathThroughBox path_through_box(const Vector3& lower, const Vector3& upper, const Vector3& origin,
-                                const Vector3& direction);
+using mpm::path_through_box;
+using mpm::PathThroughBox;
 
 /// What the metrics are measured on.
 struct WoundGeometry

@@ -7,6 +7,7 @@
 #include "deck/deck_reader.h"
 #include "io/run_directory.h"
 #include "simulator/checkpointer.h"
+#include "simulator/scene_warnings.h"
 #include "simulator/simulation_runner.h"
 #include "deck/version.h"
 
@@ -83,15 +84,20 @@ int run_command(const CommandLine& line)
 
 int check_command(const CommandLine& line)
 {
+  RunParameters parameters;
   try
   {
-    read_run_parameters(line.deck, line.overrides);
+    parameters = read_run_parameters(line.deck, line.overrides);
   }
   catch (const DeckError& error)
   {
     report(error);
     return 2;
   }
+  // What a run would warn about before its first step: the deck runs, but may mislead.
+  const bool has_mpm_side = parameters.method == Method::mpm;
+  for (const std::string& warning : simulator::scene_warnings(parameters, has_mpm_side))
+    std::cerr << "vulnus: warning: " << warning << '\n';
   std::cout << line.deck << ": deck OK\n";
   return 0;
 }

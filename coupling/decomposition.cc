@@ -264,6 +264,15 @@ std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& sc
     problems.push_back({{"scheme", "far_field.integrator"},
                         "the same-step scheme needs the explicit central-difference far field",
                         "use the multi-step scheme for an implicit far field"});
+  // The explicit far field's steps take the interface node by node; only an implicit far
+  // field's windows are balanced or take the dashpot, which would otherwise change nothing.
+  if (hybrid.window_coupling == WindowCoupling::dashpot &&
+      far_field.integrator == fem::TimeIntegrator::central_difference)
+    problems.push_back({{"window_coupling", "far_field.integrator"},
+                        "'dashpot' couples the windows of an implicit far field, and the "
+                        "explicit one (central difference) has none: it would change nothing",
+                        "use Window coupling = balanced (the default), or Integrator = Newmark "
+                        "or generalized alpha"});
   if (far_field.degree != 1)
     problems.push_back({{"far_field.degree"},
                         "the interface nodes must coincide with MPM grid nodes, which needs "
@@ -291,6 +300,7 @@ HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters&
   split.hybrid = hybrid;
   split.coupled_body = static_cast<std::size_t>(split_body_index(scene, hybrid));
   split.mpm = scene;
+  split.mpm.deck_bodies = scene.bodies;
   mpm::BodyParameters& zone = split.mpm.bodies[split.coupled_body];
   const mpm::BodyParameters slab = zone;
   for (int d = 0; d < 3; ++d)

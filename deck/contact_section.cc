@@ -23,8 +23,9 @@ void declare_contact_section(EntryTable& table)
                 "sit 2/3 of a cell apart.");
   table.declare("Rigid surface", "points", Patterns::Selection("points|exact"),
                 "Where contact takes a rigid body's surface (a rigid material, or a projectile "
-                "held rigid while elastic): points (its mass centre seen from each node, with "
-                "the proximity distance above) or exact (its deck shape, sphere, box or "
+                "held rigid while elastic until the hold releases it: from there its points, "
+                "as the log and summary.json say): points (its mass centre seen from each "
+                "node, with the proximity distance above) or exact (its deck shape, sphere, box or "
                 "cylinder, moved with it: a node engages where the other body's mass centre, "
                 "less half that body's point spacing, reaches the shape after the step's "
                 "approach, and the shape gives the normal; a rigid material's body then also weighs its "

@@ -43,7 +43,7 @@ void declare_far_field_section(EntryTable& table)
                 "field carries elastic waves, and the linear term damps the target's ringing "
                 "by an amount of order h that a refined run does not have (docs/far_field.md "
                 "section 11). The implicit integrators have none (their damping is the "
-                "spectral radius).");
+                "spectral radius) and refuse true.");
   table.declare("CFL", "0.5", Patterns::Double(0.0, 1.0),
                 "Explicit: Courant number in dt = CFL h_min / c over the cells, in (0, 1].");
   table.declare("Time step", "1e-5", Patterns::Double(0.0),
@@ -112,7 +112,7 @@ void parse_far_field_section(dealii::ParameterHandler& prm, RunParameters& param
     (integration == "automatic" && f.integrator == fem::TimeIntegrator::central_difference &&
      f.degree == 1);
   f.hourglass_coefficient = prm.get_double("Hourglass coefficient");
-  if (prm.get_bool("Shock viscosity") && f.integrator == fem::TimeIntegrator::central_difference)
+  if (prm.get_bool("Shock viscosity")) // an implicit far field refuses it (fem::check_parameters)
     f.shock_viscosity = {parameters.scene.artificial_viscosity_linear,
                          parameters.scene.artificial_viscosity_quadratic};
   f.cfl = prm.get_double("CFL");

@@ -113,6 +113,11 @@ std::vector<ParameterProblem> check_parameters(const FeSceneParameters& p)
         "use 1 (the eight-point element's stiffness)");
   if (!(p.shock_viscosity.linear >= 0.0 && p.shock_viscosity.quadratic >= 0.0))
     add({"shock_viscosity"}, "coefficients must not be negative", "use 0.06 and 1.5, or 0");
+  if (p.shock_viscosity.active() && p.integrator != TimeIntegrator::central_difference)
+    add({"shock_viscosity", "integrator"},
+        "the implicit integrators have no shock viscosity (their numerical damping is the "
+        "spectral radius), so it would change nothing",
+        "set Shock viscosity = false, or Integrator = central difference");
   if (!(p.cfl > 0.0 && p.cfl <= 1.0))
     add({"cfl"}, number(p.cfl) + " outside (0, 1]", "use about 0.5");
   if (p.integrator != TimeIntegrator::central_difference && !(p.time_step > 0.0))

@@ -138,7 +138,7 @@ struct FeSceneParameters
   /// the hourglass modes for small strains of an isotropic law (exactly, on box cells).
   double hourglass_coefficient = 1.0;
   /// Explicit only: the bulk viscosity of the MPM points (materials/shock_viscosity.h) in the
-  /// cells, h the cell's size; the implicit integrators ignore it. Off by default.
+  /// cells, h the cell's size; refused with an implicit integrator. Off by default.
   materials::ShockViscosity shock_viscosity;
 
   TimeIntegrator integrator = TimeIntegrator::central_difference;

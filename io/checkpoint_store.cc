@@ -17,11 +17,12 @@ namespace
 {
 using namespace mpm::binary;
 
-// Format 2 added the mesh output list, format 3 the temporary cavity's record; older files
-// are refused by name.
-constexpr char header_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '3'};
+// Format 2 added the mesh output list, format 3 the temporary cavity's record, format 4 the
+// run's warnings; older files are refused by name.
+constexpr char header_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '4'};
 constexpr char format_1_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '1'};
 constexpr char format_2_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '2'};
+constexpr char format_3_tag[8] = {'V', 'U', 'L', 'N', 'R', 'U', 'N', '3'};
 constexpr char trailer_tag[8] = {'V', 'U', 'L', 'N', 'E', 'N', 'D', '1'};
 constexpr const char* prefix = "step_";
 constexpr const char* suffix = ".chk";
@@ -51,6 +52,10 @@ std::string CheckpointStore::write(const std::uint64_t step, const RunProgress& 
                           put_text(out, progress.output_records);
                           put_text(out, progress.mesh_output_records);
                           put_vector(out, progress.cavity_record);
+                          put(out, static_cast<std::uint64_t>(progress.warnings.size()));
+                          for (const std::string& warning : progress.warnings)
+                            put_text(out, warning);
+                          put(out, static_cast<std::uint8_t>(progress.energy_warned));
                           write_state(out);
                           out.write(trailer_tag, sizeof(trailer_tag));
                         });
@@ -120,6 +125,9 @@ RunProgress CheckpointStore::read_newest(const std::function<void(std::istream&)
       if (in && std::equal(tag, tag + sizeof(tag), format_2_tag))
         throw std::runtime_error("it was written by an older vulnus (checkpoint format 2, "
                                  "without the temporary cavity's record)");
+      if (in && std::equal(tag, tag + sizeof(tag), format_3_tag))
+        throw std::runtime_error("it was written by an older vulnus (checkpoint format 3, "
+                                 "without the run's warnings)");
       if (!in || !std::equal(tag, tag + sizeof(tag), header_tag))
         throw std::runtime_error("it is not a vulnus run checkpoint");
       RunProgress progress;
@@ -130,6 +138,12 @@ RunProgress CheckpointStore::read_newest(const std::function<void(std::istream&)
       get_text(in, progress.output_records);
       get_text(in, progress.mesh_output_records);
       get_vector(in, progress.cavity_record);
+      progress.warnings.resize(get_length(in, std::uint64_t(1) << 20));
+      for (std::string& warning : progress.warnings)
+        get_text(in, warning);
+      std::uint8_t energy_warned = 0;
+      get(in, energy_warned);
+      progress.energy_warned = energy_warned != 0;
       read_state(in);
       expect_tag(in, trailer_tag, "it is incomplete (no end tag)");
       path = candidate;

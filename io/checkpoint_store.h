@@ -1,8 +1,8 @@
 // The checkpoints of a run directory: `checkpoints/step_NNNNNNNNNN.chk`, each written to a
 // temporary name and renamed, the newest `keep` kept. A checkpoint holds the run's own
-// progress (resolved deck, next output time, history length, wall time, particle and mesh output lists)
-// followed by the solver's state, and ends with a tag; restart takes the newest one that
-// reads completely and skips (with a warning) any that does not.
+// progress (resolved deck, next output time, history length, wall time, particle and mesh output
+// lists, the warnings given so far) followed by the solver's state, and ends with a tag; restart
+// takes the newest one that reads completely and skips (with a warning) any that does not.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +23,10 @@ struct RunProgress
   std::string output_records;      ///< XdmfSeries::save_records of the particles
   std::string mesh_output_records; ///< XdmfSeries::save_records of the FE mesh
   std::vector<double> cavity_record; ///< analysis::TemporaryCavity::packed
+  /// summary.json's warnings the steps gave so far (not those of the scene at the start, which
+  /// a restart gives again), and whether the energy guard has given its one warning.
+  std::vector<std::string> warnings;
+  bool energy_warned = false;
 };
 
 class CheckpointStore

@@ -84,6 +84,14 @@ void body_bounding_box(const BodyParameters& body, Vector3& lower, Vector3& uppe
   }
 }
 
+double gap_to_domain_face(const SceneParameters& scene, const BodyParameters& body, const int face)
+{
+  Vector3 lower, upper;
+  body_bounding_box(body, lower, upper);
+  const int d = face / 2;
+  return face % 2 == 0 ? lower[d] - scene.domain_min[d] : scene.domain_max[d] - upper[d];
+}
+
 namespace
 {
 /// Calls f(x) for each lattice point of `body` (n per cell and axis, at sub-cell centres).

@@ -19,6 +19,10 @@ double body_volume(const BodyParameters& body);
 /// Axis-aligned bounding box of the body's shape.
 void body_bounding_box(const BodyParameters& body, Vector3& lower, Vector3& upper);
 
+/// Gap between the body's bounding box and the domain face `face` (x-, x+, y-, y+, z-, z+ as
+/// 0 to 5), m: at most the shape's own gap; 0 or less where it touches or crosses the face.
+double gap_to_domain_face(const SceneParameters& scene, const BodyParameters& body, int face);
+
 /// Appends the points of every body, one body after another, to `particles`. Points sit at
 /// the centres of the n^3 sub-cells of every grid cell whose sub-cell centre is inside the
 /// shape. Throws std::invalid_argument when a body has no point (smaller than a sub-cell).

@@ -46,6 +46,10 @@ struct GridFields
   /// correction less before it; zero where no contact acted), sized when contact is on. The
   /// points' velocity update weighs it to book the kinetic energy contact took from them.
   std::vector<Vector3> contact_change;
+  /// The velocity change the domain faces' supports gave each deformable body's node this step
+  /// (zero off the fixed and roller faces), sized when a face is not free. The points' velocity
+  /// update weighs it to book the kinetic energy the supports took from them.
+  std::vector<Vector3> support_change;
 
   /// Sizes the arrays; data is not cleared (the scatter clears it in parallel).
   void resize(std::size_t n_active_nodes)

@@ -15,22 +15,24 @@ namespace
 /// Velocity update of the points of one share of one deformable body: the FLIP/PIC blend
 /// v = a (v_p + sum w (v_i^(n+1) - v_i^n)) + (1 - a) sum w v_i^(n+1). With Project (MUSL),
 /// each point's new momentum goes back to the nodes it read from, with the same weights. With
-/// Book, returns the kinetic energy the contact corrections took from the points (see
-/// update_point_kinematics).
+/// Book, returns the kinetic energy the contact corrections (`contact`, when not null) and the
+/// supports (`supports`, when not null) took from the points (see update_point_kinematics).
 template <ShapeFunction shape, bool project, bool book>
-double update_share_velocities(const Grid& grid, const double lp, const double flip,
-                               const std::size_t b, const ShareRange range,
-                               const GridFields& fields, Particles& particles, Vector3* momentum,
-                               Vector3* contested)
+CorrectionLoss update_share_velocities(const Grid& grid, const double lp, const double flip,
+                                       const std::size_t b, const ShareRange range,
+                                       const GridFields& fields, Particles& particles,
+                                       Vector3* momentum, Vector3* contested,
+                                       const Vector3* contact, const Vector3* supports)
 {
   constexpr int n_entries = stencil_entries(shape);
   const std::size_t n_bodies = particles.n_bodies();
-  double contact_loss = 0.0;
+  CorrectionLoss loss;
   for (long p = range.begin; p < range.end; ++p)
   {
     Vector3 v_pic = Vector3::Zero();
     Vector3 dv = Vector3::Zero();
     Vector3 dv_contact = Vector3::Zero();
+    Vector3 dv_supports = Vector3::Zero();
     std::array<std::int32_t, n_entries> slots;
     std::array<double, n_entries> weights;
     int n_nodes = 0;
@@ -42,7 +44,12 @@ double update_share_velocities(const Grid& grid, const double lp, const double f
                            v_pic += w * fields.velocity_new[e];
                            dv += w * (fields.velocity_new[e] - fields.velocity[e]);
                            if constexpr (book)
-                             dv_contact += w * fields.contact_change[e];
+                           {
+                             if (contact)
+                               dv_contact += w * contact[e];
+                             if (supports)
+                               dv_supports += w * supports[e];
+                           }
                            if constexpr (project)
                            {
                              slots[n_nodes] = slot;
@@ -52,9 +59,13 @@ double update_share_velocities(const Grid& grid, const double lp, const double f
     const Vector3 v_flip = particles.velocity[p] + dv;
     const Vector3 v = flip * v_flip + (1.0 - flip) * v_pic;
     // m (|u|^2 - |u + dv_c|^2) / 2 with u = (v_p + v_flip - dv_c) / 2, without the difference
-    // of squares.
+    // of squares; the supports' change likewise.
     if constexpr (book)
-      contact_loss -= 0.5 * particles.mass[p] * dv_contact.dot(particles.velocity[p] + v_flip);
+    {
+      const Vector3 twice_mean = particles.velocity[p] + v_flip;
+      loss.contact -= 0.5 * particles.mass[p] * dv_contact.dot(twice_mean);
+      loss.supports -= 0.5 * particles.mass[p] * dv_supports.dot(twice_mean);
+    }
     // Kinetic energy the blend takes from the FLIP velocity (PIC's damping), booked as
     // dissipated so the energy balance closes.
     if (flip < 1.0)
@@ -69,7 +80,7 @@ double update_share_velocities(const Grid& grid, const double lp, const double f
         scatter_target(grid, slots[i], n_bodies, b, momentum, contested) += weights[i] * mv;
     }
   }
-  return contact_loss;
+  return loss;
 }
 /// ln(J_new / J_old) / dt, or `fallback` (the trace of L) where either J is not positive.
 double volume_rate(const double J_old, const double J_new, const double dt, const double fallback)
@@ -78,14 +89,17 @@ double volume_rate(const double J_old, const double J_new, const double dt, cons
 }
 } // namespace
 
-double update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
-                               const KinematicsSettings& s, GridFields& fields,
-                               Particles& particles, ScatterBuffers* projection,
-                               const bool book_contact)
+CorrectionLoss update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
+                                       const KinematicsSettings& s, GridFields& fields,
+                                       Particles& particles, ScatterBuffers* projection,
+                                       const bool book_contact, const bool book_supports)
 {
   const std::size_t n_bodies = particles.n_bodies();
+  const bool book = book_contact || book_supports;
+  const Vector3* contact = book_contact ? fields.contact_change.data() : nullptr;
+  const Vector3* supports = book_supports ? fields.support_change.data() : nullptr;
   // Per share and body, summed in that order afterwards: the same total on every run.
-  std::vector<double> contact_loss(book_contact ? grid.n_point_shares() * n_bodies : 0, 0.0);
+  std::vector<CorrectionLoss> losses(book ? grid.n_point_shares() * n_bodies : 0);
   with_shape(
       transfer.shape,
       [&](auto shape_constant)
@@ -103,18 +117,22 @@ double update_point_kinematics(const Grid& grid, const TransferSettings& transfe
           if (s.body_is_rigid[b])
             for (long p = range.begin; p < range.end; ++p)
               particles.velocity[p] = s.rigid_velocity[b];
-          else if (book_contact)
-            contact_loss[share * n_bodies + b] =
+          else if (book)
+            losses[share * n_bodies + b] =
               momentum ? update_share_velocities<shape, true, true>(
-                           grid, lp, flip, b, range, fields, particles, momentum, contested)
+                           grid, lp, flip, b, range, fields, particles, momentum, contested,
+                           contact, supports)
                        : update_share_velocities<shape, false, true>(
-                           grid, lp, flip, b, range, fields, particles, nullptr, nullptr);
+                           grid, lp, flip, b, range, fields, particles, nullptr, nullptr,
+                           contact, supports);
           else if (momentum)
             update_share_velocities<shape, true, false>(grid, lp, flip, b, range, fields,
-                                                        particles, momentum, contested);
+                                                        particles, momentum, contested,
+                                                        nullptr, nullptr);
           else
             update_share_velocities<shape, false, false>(grid, lp, flip, b, range, fields,
-                                                         particles, nullptr, nullptr);
+                                                         particles, nullptr, nullptr,
+                                                         nullptr, nullptr);
         };
         if (projection)
         {
@@ -128,9 +146,12 @@ double update_point_kinematics(const Grid& grid, const TransferSettings& transfe
                                        const ShareRange range)
                                    { update(share, b, range, nullptr, nullptr); });
       });
-  double total = 0.0;
-  for (const double loss : contact_loss)
-    total += loss;
+  CorrectionLoss total;
+  for (const CorrectionLoss& loss : losses)
+  {
+    total.contact += loss.contact;
+    total.supports += loss.supports;
+  }
   return total;
 }
 

@@ -37,6 +37,14 @@ struct KinematicsSettings
   }
 };
 
+/// Kinetic energy the grid's corrections took from the points in one velocity update (J;
+/// negative where they gave some).
+struct CorrectionLoss
+{
+  double contact = 0.0;  ///< by the contact corrections (fields.contact_change)
+  double supports = 0.0; ///< by the domain faces' supports (fields.support_change)
+};
+
 /// Updates point velocities from fields.velocity (v^n) and fields.velocity_new (v^(n+1)):
 /// FLIP/PIC blend. Rigid bodies take their rigid velocity. With `projection` (MUSL), the
 /// same pass projects every deformable point's new momentum m v back to the nodes marked for
@@ -49,11 +57,13 @@ struct KinematicsSettings
 /// (v_p + v_flip - dv_c) / 2: the correction's impulse does its work at the step's mean
 /// velocity. Where contact cancels a node's force every step the step loses m |dt f / m|^2 / 2
 /// that no later step gives back; this books it as the contact's (docs/validation.md).
-/// Otherwise it returns 0.
-double update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
-                               const KinematicsSettings& settings, GridFields& fields,
-                               Particles& particles, ScatterBuffers* projection,
-                               bool book_contact = false);
+/// With `book_supports`, fields.support_change holds the changes the face conditions made,
+/// booked the same way as the supports' loss (a fixed or roller face stops nodes as contact
+/// does). What is not booked is returned as 0.
+CorrectionLoss update_point_kinematics(const Grid& grid, const TransferSettings& transfer,
+                                       const KinematicsSettings& settings, GridFields& fields,
+                                       Particles& particles, ScatterBuffers* projection,
+                                       bool book_contact = false, bool book_supports = false);
 
 /// One gather per point at its position of step n: F <- (I - dt L/2)^-1 (I + dt L/2) F
 /// (midpoint) or F <- (I + dt L) F (forward Euler) with L = sum v_gradient (x) grad w, then x <- x + dt sum w v_new (v_new = fields.velocity_new, the

@@ -11,6 +11,12 @@
 
 namespace vulnus::mpm
 {
+bool any_support(const FaceConditions& faces)
+{
+  return std::any_of(faces.begin(), faces.end(),
+                     [](const FaceCondition c) { return c != FaceCondition::free; });
+}
+
 void apply_face_conditions(const Grid& grid, const FaceConditions& faces, const std::int64_t key,
                            Vector3& velocity)
 {
@@ -279,6 +285,9 @@ void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fiel
   const long n_nodes = static_cast<long>(grid.n_active());
   const double dt = s.time_step;
   result.support_impulse.fill(Vector3::Zero());
+  const bool supports = any_support(s.faces);
+  if (supports)
+    fields.support_change.resize(fields.velocity_new.size());
 #pragma omp parallel
   {
   std::array<Vector3, 6> impulse_local, impulse_elsewhere; // another rank's node
@@ -292,9 +301,12 @@ void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fiel
     const NodeBodyData* data = &fields.data[node * n_bodies];
     Vector3* v = &fields.velocity[node * n_bodies];
     Vector3* v_new = &fields.velocity_new[node * n_bodies];
+    Vector3* change = supports ? &fields.support_change[node * n_bodies] : nullptr;
     std::size_t n_with_mass = 0;
     for (std::size_t b = 0; b < n_bodies; ++b)
     {
+      if (change)
+        change[b].setZero();
       if (data[b].mass <= s.mass_tolerance)
       {
         v[b].setZero();
@@ -332,9 +344,14 @@ void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fiel
       continue; // resolve_contacts applies the face conditions after the correction
     const bool owned = !s.owns_node || s.owns_node(key);
     for (std::size_t b = 0; b < n_bodies; ++b)
-      if (data[b].mass > s.mass_tolerance && !s.body_is_rigid[b]) // v^n stays: FLIP sees the stop
+      if (data[b].mass > s.mass_tolerance && !s.body_is_rigid[b])
+      {
+        const Vector3 trial = v_new[b]; // v^n stays: FLIP sees the stop
         apply_face_conditions(grid, s.faces, key, data[b].mass, v_new[b],
                               owned ? impulse_local : impulse_elsewhere);
+        if (change)
+          change[b] = v_new[b] - trial;
+      }
   }
 #pragma omp critical
   for (int f = 0; f < 6; ++f)
@@ -359,6 +376,7 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
   std::size_t n_contact_nodes = 0;
   const std::vector<std::int64_t>& keys = grid.active_keys();
   fields.contact_change.resize(fields.velocity_new.size());
+  const bool supports = any_support(s.faces); // update_grid sized fields.support_change
 #pragma omp parallel reduction(+ : dissipation, n_contact_nodes)
   {
     std::vector<Vector3> force_local(n_bodies, Vector3::Zero());
@@ -417,13 +435,17 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
         ++n_contact_nodes;
         dissipation += removed;
       }
+      Vector3* held = supports ? &fields.support_change[node * n_bodies] : nullptr;
       for (std::size_t b = 0; b < n_bodies; ++b)
         if (data[b].mass > s.mass_tolerance && !s.body_is_rigid[b])
         {
+          const Vector3 trial = v_new[b] - change[b];
           apply_face_conditions(grid, s.faces, keys[node], data[b].mass, v_new[b],
                                 owned ? impulse_local : impulse_elsewhere);
           // The face conditions are projections: what is left of the correction after them.
           apply_face_conditions(grid, s.faces, keys[node], change[b]);
+          if (held)
+            held[b] = v_new[b] - change[b] - trial; // the supports' share of the correction
         }
     }
 #pragma omp critical

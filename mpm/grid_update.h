@@ -78,14 +78,20 @@ struct GridUpdateResult
 
 /// Computes fields.velocity (v^n) and fields.velocity_new (v^(n+1)) of every node and body,
 /// with the face conditions, except at nodes where bodies meet when contact is on; books the
-/// supports' impulse there into result.support_impulse (zeroed first).
+/// supports' impulse there into result.support_impulse (zeroed first) and, when a face is not
+/// free, their velocity change into fields.support_change (zero elsewhere).
 void update_grid(const Grid& grid, const GridUpdateSettings& settings, GridFields& fields,
                  GridUpdateResult& result);
 
 /// Corrects v^(n+1) at the nodes where two or more bodies have mass (contact on), then applies
-/// the face conditions there; fills the contact force, dissipation and node count.
+/// the face conditions there; fills the contact force, dissipation and node count. There the
+/// supports' change is what they take from the trial velocity (the contact's change is what is
+/// left of the correction after them), so the two sum to the node's whole correction.
 void resolve_contacts(const Grid& grid, const GridUpdateSettings& settings, GridFields& fields,
                       GridUpdateResult& result);
+
+/// Whether a face is fixed or a roller (its supports can take kinetic energy).
+bool any_support(const FaceConditions& faces);
 
 /// Applies the domain face conditions to a nodal velocity of node `key`.
 void apply_face_conditions(const Grid& grid, const FaceConditions& faces, std::int64_t key,

@@ -81,8 +81,11 @@ SubcycleResult ProjectileSubcycle::advance(Particles& points, const std::vector<
     update_grid(grid, stages.grid_update, fields, grid_result);
     for (int f = 0; f < 6; ++f)
       result.support_impulse[f] += grid_result.support_impulse[f];
-    update_point_kinematics(grid, stages.transfer, stages.kinematics, fields, points,
-                            stages.musl ? &buffers : nullptr);
+    const CorrectionLoss loss =
+      update_point_kinematics(grid, stages.transfer, stages.kinematics, fields, points,
+                              stages.musl ? &buffers : nullptr, false,
+                              any_support(stages.grid_update.faces));
+    result.support_loss += loss.supports;
     if (stages.musl)
       velocities_from_momenta(grid, stages.grid_update, fields);
     update_deformation_gradients_and_positions(

@@ -39,6 +39,8 @@ struct SubcycleResult
   std::string failure_message;
   /// Work the lent contact force did on the points over the substeps (J).
   double contact_work = 0.0;
+  /// Kinetic energy the domain faces' supports took from the points over the substeps (J).
+  double support_loss = 0.0;
   /// Impulse the domain faces gave the points over the substeps, by face (N s).
   std::array<Vector3, 6> support_impulse = {Vector3::Zero(), Vector3::Zero(), Vector3::Zero(),
                                             Vector3::Zero(), Vector3::Zero(), Vector3::Zero()};

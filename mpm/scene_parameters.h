@@ -131,5 +131,9 @@ struct SceneParameters : scene::SceneDescription
   /// Points that leave the grid: removed (their energy and momentum booked as outflow) or,
   /// when false, the run stops as a blow-up.
   bool remove_points_leaving_grid = false;
+  /// The bodies as the deck draws them, when the MPM scene holds only a part of one (a
+  /// hybrid's zone): the projectile's path enters and leaves the target through their
+  /// surfaces. Empty: `bodies`.
+  std::vector<BodyParameters> deck_bodies;
 };
 } // namespace vulnus::mpm

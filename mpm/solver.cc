@@ -114,19 +114,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   {
     const Vector3 v0 = scene.bodies[projectile_body].initial_velocity;
     flight_axis = v0.norm() > 0 ? Vector3(v0.normalized()) : Vector3::UnitY();
-    exit_plane = -std::numeric_limits<double>::max();
-    entrance_plane = std::numeric_limits<double>::max();
-    for (std::size_t b = 0; b < n_bodies; ++b)
-      if (static_cast<int>(b) != projectile_body)
-        for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
-        {
-          const double along = particles.position[p].dot(flight_axis);
-          exit_plane = std::max(exit_plane, along);
-          entrance_plane = std::min(entrance_plane, along);
-        }
-    exit_plane = ranks.max(exit_plane);
-    entrance_plane = ranks.min(entrance_plane);
-    nose_offset = 0.5 * scene.cell_size / scene.bodies[projectile_body].particles_per_cell;
+    measure_path_through_target(scene);
     penetration_record = ProjectilePenetration(0.25 * scene.cell_size);
   }
 
@@ -136,6 +124,7 @@ Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
   update_stresses(stress_settings, volumetric_rate_or_null(), particles, stress_result);
   begin_rigid_hold();
   plan_exact_rigid_surfaces();
+  begin_rotation_estimate(); // with a rigid material's exact mass
   plan_projectile_subcycle();
   sort_points();
   const SceneDiagnostics d = diagnostics();
@@ -225,6 +214,7 @@ void Solver::advance_projectile_substeps(const double dt)
     for (int f = 0; f < 6; ++f)
       support_impulse_here[f] += result.support_impulse[f];
   accumulated_contact_dissipation -= result.contact_work; // a total on every rank
+  accumulated_support_dissipation += result.support_loss; // likewise
   const long failed = result.failed_point - static_cast<long>(first_of_mine);
   if (failed >= 0 && failed < static_cast<long>(n_mine) && stress_result.failed_point < 0)
   {
@@ -402,13 +392,17 @@ void Solver::advance(const double cap)
 
   kinematics.time_step = dt;
   const bool musl = parameters.update_scheme == UpdateScheme::musl;
-  double contact_loss_of_points = update_point_kinematics(
-    grid, transfer, kinematics, fields, particles, musl ? &buffers : nullptr, grid_settings.contact);
-  if (grid_settings.contact)
+  const bool supports = any_support(grid_settings.faces);
+  const CorrectionLoss loss =
+    update_point_kinematics(grid, transfer, kinematics, fields, particles,
+                            musl ? &buffers : nullptr, grid_settings.contact, supports);
+  if (grid_settings.contact || supports)
   {
+    double losses[2] = {loss.contact, loss.supports};
     if (ranks.distributed())
-      ranks.sum(&contact_loss_of_points, 1);
-    accumulated_contact_dissipation += contact_loss_of_points;
+      ranks.sum(losses, 2);
+    accumulated_contact_dissipation += losses[0];
+    accumulated_support_dissipation += losses[1];
   }
   if (musl)
   {
@@ -448,6 +442,7 @@ void Solver::advance(const double cap)
   for (std::size_t b = 0; b < peak_yield_ratio.size(); ++b)
     peak_yield_ratio[b] = std::max(peak_yield_ratio[b], yield_ratio[b]);
 
+  estimate_projectile_rotation(dt);
   // Free rigid bodies respond to the contact force (translation only); a prescribed motion
   // is held against it from outside, and gravity acts on the deformable bodies, the
   // projectile held rigid while elastic among them.

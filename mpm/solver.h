@@ -13,6 +13,7 @@
 #include "mpm/grid_update.h"
 #include "mpm/grid_to_particle.h"
 #include "mpm/interface_exchange.h"
+#include "mpm/neglected_rotation.h"
 #include "mpm/nonlocal_failure.h"
 #include "mpm/particle_to_grid.h"
 #include "mpm/particles.h"
@@ -156,13 +157,17 @@ public:
   int projectile() const { return projectile_body; }
   /// Axis of the projectile's flight (unit), or +y when there is no projectile.
   const Vector3& flight_direction() const { return flight_axis; }
-  /// The target's extent along the flight axis at the start: the smallest and the largest
-  /// x . flight_direction() of its points (the entrance and exit planes of a normal shot).
+  /// Where the projectile's path (the line through its mass centre along its flight) enters
+  /// and leaves the target's surfaces as the deck draws them, as x . flight_direction().
   std::pair<double, double> target_extent_along_flight() const { return {entrance_plane, exit_plane}; }
+  /// false: the path misses the target, and the planes above are its points' extent.
+  bool path_crosses_target() const { return path_hits_target; }
   /// Force the other bodies exert on each body in the last step (N).
   const std::vector<Vector3>& contact_forces() const { return grid_result.contact_force; }
   /// Kinetic energy removed by contact since the start (J).
   double contact_dissipation() const { return accumulated_contact_dissipation; }
+  /// Kinetic energy the fixed and roller faces' supports removed since the start (J).
+  double support_dissipation() const { return accumulated_support_dissipation; }
   /// Largest point speed seen at the start of a step so far, per body (m/s).
   const std::vector<double>& peak_point_speeds() const { return peak_point_speed; }
   /// Largest von Mises / yield seen so far, per body.
@@ -205,6 +210,9 @@ public:
   /// The deformable projectile held rigid while elastic (Time/Rigid projectile while
   /// elastic): whether it applies, is held now, and why it was released or never held.
   const RigidHold& projectile_hold() const { return rigid_hold; }
+  /// A free rigid projectile's rotation that its translation-only motion leaves out
+  /// (mpm/neglected_rotation.h); inactive for any other projectile.
+  const NeglectedRotation& projectile_rotation() const { return rotation_estimate; }
   int last_projectile_substeps() const { return n_projectile_substeps; }
   const PhaseTimes& phase_times() const { return timings; }
 
@@ -224,9 +232,23 @@ private:
   /// Impedance rho c of each deformable body at the start (its stiffest point), 0 for rigid
   /// ones. Collective.
   std::vector<double> body_impedances() const;
+  /// A body's mass, mass centre, inertia about it and farthest point from it.
+  struct MassDistribution
+  {
+    double mass = 0.0;
+    Vector3 centre = Vector3::Zero();
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+    double radius = 0.0;
+  };
+  /// Body b's, over all ranks. Collective.
+  MassDistribution mass_distribution(std::size_t b) const;
   /// Holds the deformable projectile rigid when the scene asks and the impact allows it
   /// (mpm/rigid_hold.h). Collective.
   void begin_rigid_hold();
+  /// Starts the estimate of a free rigid projectile's neglected rotation. Collective.
+  void begin_rotation_estimate();
+  /// After this step's contact, before the rigid velocities take its force.
+  void estimate_projectile_rotation(double dt);
   /// Per body, the exact shape contact takes for it while it is rigid (Contact/Rigid surface
   /// = exact), and half its point spacing; a rigid material's body gets its shape's mass.
   void plan_exact_rigid_surfaces();
@@ -270,6 +292,9 @@ private:
   void record_projectile_exit();
   /// Collective: the projectile's nose depth and forward speed into the penetration record.
   void record_penetration();
+  /// Collective, at the start: the entrance and exit planes on the target's surfaces along
+  /// the projectile's path, and the projectile's front beyond its points.
+  void measure_path_through_target(const SceneParameters& scene);
   /// Collective: whether a projectile point lies within a cell of the box holding the target's
   /// points that still carry stress (debris, totally failed, is left out).
   bool projectile_near_target() const;
@@ -307,6 +332,7 @@ private:
   std::vector<Vector3> shared_velocity_start, shared_velocity_end;
   std::unique_ptr<ProjectileSubcycle> subcycle;
   RigidHold rigid_hold;
+  NeglectedRotation rotation_estimate;
   std::vector<Vector3> projectile_trial_velocity; ///< per active node, before contact
   std::vector<Vector3> projectile_contact_force;  ///< per projectile point of this rank
   int n_projectile_substeps = 0;
@@ -317,15 +343,17 @@ private:
   bool contact_active = false;
   int projectile_body = -1;
   Vector3 flight_axis = Vector3::UnitY();
-  double exit_plane = 0.0; ///< largest x . flight_axis of the other bodies at the start
+  double exit_plane = 0.0; ///< x . flight_axis where the path leaves the target's surface
   bool projectile_reached_target = false; ///< a projectile point has been near the target
-  double entrance_plane = 0.0; ///< smallest x . flight_axis of the other bodies at the start
-  double nose_offset = 0.0;    ///< half the projectile's point spacing: its front beyond its points
+  double entrance_plane = 0.0; ///< x . flight_axis where the path enters the target's surface
+  double nose_offset = 0.0;    ///< the projectile's front beyond its foremost point at the start
+  bool path_hits_target = false; ///< false: the planes are the target points' extent
 
   double current_time = 0.0;
   double time_step = 0.0;
   std::size_t n_steps = 0;
   double accumulated_contact_dissipation = 0.0;
+  double accumulated_support_dissipation = 0.0; ///< same on every rank
   double energy_at_start = 0.0;
   Vector3 momentum_at_start = Vector3::Zero();
   Vector3 accumulated_external_impulse = Vector3::Zero(); ///< same on every rank

@@ -14,7 +14,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '8'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '9'};
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -35,6 +35,7 @@ void Solver::save(std::ostream& out) const
   put(out, time_step);
   put(out, static_cast<std::uint64_t>(n_steps));
   put(out, accumulated_contact_dissipation);
+  put(out, accumulated_support_dissipation);
   put(out, energy_at_start);
   put(out, momentum_at_start);
   put(out, accumulated_external_impulse);
@@ -58,6 +59,7 @@ void Solver::save(std::ostream& out) const
   put_vector(out, penetration_record.packed());
   put_vector(out, rigid_hold.packed());
   put_text(out, rigid_hold.record().reason);
+  put_vector(out, rotation_estimate.packed());
   for (const Vector3& impulse : support_impulse_here)
     put(out, impulse);
   put(out, static_cast<std::uint64_t>(ranks.size()));
@@ -91,13 +93,14 @@ void Solver::restore(std::istream& in)
   get_vector(in, contact_force);
   get(in, contact_nodes);
   get(in, active);
-  double time = 0, step = 0, contact = 0, energy = 0, outflow = 0;
+  double time = 0, step = 0, contact = 0, supports = 0, energy = 0, outflow = 0;
   std::uint64_t steps = 0, removed = 0;
   Vector3 outflow_p;
   get(in, time);
   get(in, step);
   get(in, steps);
   get(in, contact);
+  get(in, supports);
   get(in, energy);
   Vector3 momentum_start, external, added;
   get(in, momentum_start);
@@ -124,6 +127,8 @@ void Solver::restore(std::istream& in)
   std::string hold_reason;
   get_vector(in, hold_packed);
   get_text(in, hold_reason);
+  std::vector<double> rotation_packed;
+  get_vector(in, rotation_packed);
   exit_loaded.recorded = exit_recorded != 0;
   exit_loaded.past_exit_plane = past_exit_plane != 0;
   std::array<Vector3, 6> supports_loaded;
@@ -177,6 +182,7 @@ void Solver::restore(std::istream& in)
   time_step = step;
   n_steps = steps;
   accumulated_contact_dissipation = contact;
+  accumulated_support_dissipation = supports;
   energy_at_start = energy;
   momentum_at_start = momentum_start;
   accumulated_external_impulse = external;
@@ -201,6 +207,7 @@ void Solver::restore(std::istream& in)
                                "that wrote it");
     make_projectile_deformable();
   }
+  rotation_estimate.unpack(rotation_packed);
   projectile_reached_target = reached_target != 0;
   support_impulse_here = supports_loaded;
 }

@@ -45,40 +45,18 @@ void Solver::begin_rigid_hold()
   const double own = impedance[b];
   const double impact = std::isinf(target) ? own * speed : speed * own * target / (own + target);
 
-  // The mass distribution about the mass centre: first and second moments over all ranks.
-  std::vector<double> moments(13, 0.0); // m, m x (3), m x x^T (9)
-  for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
-  {
-    const double m = particles.mass[p];
-    const Vector3& x = particles.position[p];
-    moments[0] += m;
-    for (int i = 0; i < 3; ++i)
-    {
-      moments[1 + i] += m * x[i];
-      for (int j = 0; j < 3; ++j)
-        moments[4 + 3 * i + j] += m * x[i] * x[j];
-    }
-  }
-  ranks.sum(moments.data(), static_cast<int>(moments.size()));
-  const double mass = moments[0];
+  // The mass distribution about the mass centre (solver_rigid_rotation.cc).
+  const MassDistribution distribution = mass_distribution(static_cast<std::size_t>(b));
+  const double mass = distribution.mass;
   if (!(mass > 0.0))
     return;
-  const Vector3 centre = Vector3(moments[1], moments[2], moments[3]) / mass;
-  Eigen::Matrix3d second;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      second(i, j) = moments[4 + 3 * i + j] - mass * centre[i] * centre[j];
-  const Eigen::Matrix3d inertia = second.trace() * Eigen::Matrix3d::Identity() - second;
-  double radius = 0.0;
-  for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
-    radius = std::max(radius, (particles.position[p] - centre).norm());
-  radius = ranks.max(radius);
 
   RigidHoldLimits limits;
   limits.yield_stress = materials_of_body[b]->elastic_limit_stress();
   limits.stress_fraction = parameters.rigid_projectile_stress_limit;
   limits.cell_size = parameters.cell_size;
-  if (!rigid_hold.begin(limits, impact, centre, inertia, radius))
+  if (!rigid_hold.begin(limits, impact, distribution.centre, distribution.inertia,
+                        distribution.radius))
     return;
 
   // Rigid with its mean velocity, which is its points' own when they share one (as a body

@@ -51,8 +51,12 @@ void Solver::exchange_shared_nodes(const double dt)
   for (std::size_t k = 0; k < shared.keys.size(); ++k)
   {
     const std::int32_t slot = grid.slot(shared.keys[k]);
-    if (slot >= 0 && fields.data[slot * n_bodies + b].mass > 0.0)
-      fields.velocity[slot * n_bodies + b] = shared_velocity_start[k];
+    if (slot < 0 || fields.data[slot * n_bodies + b].mass <= 0.0)
+      continue;
+    fields.velocity[slot * n_bodies + b] = shared_velocity_start[k];
+    // Both velocities obey the supports already: the interface ledger books that node's work.
+    if (!fields.support_change.empty())
+      fields.support_change[slot * n_bodies + b].setZero();
   }
   impose_shared_velocities(fields.velocity_new);
 }

@@ -36,13 +36,15 @@ void CavityRecorder::add_to_summary(nlohmann::json& summary) const
   if (!cavity.active())
     return;
   nlohmann::json depth = nlohmann::json::array(), largest = nlohmann::json::array(),
-                 when = nlohmann::json::array(), now = nlohmann::json::array();
+                 when = nlohmann::json::array(), now = nlohmann::json::array(),
+                 inside = nlohmann::json::array();
   for (const analysis::TemporaryCavity::Slice& s : cavity.profile())
   {
     depth.push_back(s.depth);
     largest.push_back(s.max_diameter);
     when.push_back(s.max_time);
     now.push_back(s.diameter);
+    inside.push_back(s.inside_target);
   }
   const analysis::TemporaryCavity::Slice& peak = cavity.largest();
   summary["temporary_cavity"] = {{"slice_thickness_m", cavity.slice_thickness()},
@@ -52,6 +54,7 @@ void CavityRecorder::add_to_summary(nlohmann::json& summary) const
                                  {"max_diameter_m", largest},
                                  {"max_time_s", when},
                                  {"diameter_now_m", now},
+                                 {"inside_target", inside},
                                  {"largest",
                                   {{"diameter_m", peak.max_diameter},
                                    {"depth_m", peak.depth},

@@ -44,8 +44,9 @@ Checkpointer::Checkpointer(const deck::RunParameters& parameters, io::RunDirecto
 {
 }
 
-void Checkpointer::restart(Stepper& stepper,
-                           const std::vector<std::unique_ptr<Postprocessor>>& postprocessors)
+io::RunProgress
+Checkpointer::restart(Stepper& stepper,
+                      const std::vector<std::unique_ptr<Postprocessor>>& postprocessors)
 {
   const int written_on = ranks_of_checkpoints(directory.file("checkpoints"));
   const int running_on = ranks.distributed() ? ranks.size() : 0;
@@ -87,8 +88,9 @@ void Checkpointer::restart(Stepper& stepper,
   newest_step = stepper.step_count();
   std::ostringstream o;
   o << "restarted from " << used << ": step " << stepper.step_count() << ", t = " << stepper.time()
-    << " s, the outputs and the history so far kept";
+    << " s, the outputs, the history and the warnings so far kept";
   directory.log(o.str());
+  return progress;
 }
 
 bool Checkpointer::due(const Stepper& stepper, const double run_wall_seconds) const
@@ -105,10 +107,13 @@ bool Checkpointer::due(const Stepper& stepper, const double run_wall_seconds) co
 
 std::string Checkpointer::write(const Stepper& stepper,
                                 const std::vector<std::unique_ptr<Postprocessor>>& postprocessors,
+                                const std::vector<std::string>& warnings, const bool energy_warned,
                                 const double run_wall_seconds)
 {
   io::RunProgress progress;
   progress.resolved_deck = parameters.resolved_deck;
+  progress.warnings = warnings;
+  progress.energy_warned = energy_warned;
   for (const auto& p : postprocessors)
   {
     p->flush();

@@ -32,17 +32,20 @@ public:
                const mpm::RankGroup& ranks);
 
   /// Restores the stepper and resumes every postprocessor from the newest complete
-  /// checkpoint. Throws std::runtime_error when there is none or the ranks disagree, and
-  /// RestartRefused when the deck differs from the checkpoint's in an entry a restart may not
-  /// change.
-  void restart(Stepper& stepper, const std::vector<std::unique_ptr<Postprocessor>>& postprocessors);
+  /// checkpoint; returns its progress (the warnings the run had given). Throws
+  /// std::runtime_error when there is none or the ranks disagree, and RestartRefused when the
+  /// deck differs from the checkpoint's in an entry a restart may not change.
+  io::RunProgress restart(Stepper& stepper,
+                          const std::vector<std::unique_ptr<Postprocessor>>& postprocessors);
 
   /// True when the step or wall-clock interval of checkpoints has passed.
   bool due(const Stepper& stepper, double run_wall_seconds) const;
 
-  /// Writes a checkpoint now (the postprocessors flushed first); returns its path.
+  /// Writes a checkpoint now (the postprocessors flushed first), with the warnings the steps
+  /// gave so far and whether the energy guard gave its own; returns its path.
   std::string write(const Stepper& stepper,
                     const std::vector<std::unique_ptr<Postprocessor>>& postprocessors,
+                    const std::vector<std::string>& warnings, bool energy_warned,
                     double run_wall_seconds);
 
   /// Wall time spent by the earlier processes of a restarted run (0 for a fresh run).

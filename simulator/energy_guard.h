@@ -24,6 +24,11 @@ public:
   /// the error first passes the warning bound. Throws mpm::BlowUp past the limit.
   std::optional<std::string> check(const Stepper& stepper, bool final_check = false);
 
+  /// Whether it has given its warning, for checkpoints: a restarted run does not give it again
+  /// at a later crossing.
+  bool has_warned() const { return warned; }
+  void restore(const bool has_warned) { warned = has_warned; }
+
 private:
   deck::EnergyGuardParameters bounds;
   bool warned = false;

@@ -35,6 +35,23 @@ std::string paragraph_after(const std::string& text, const std::string& heading)
   }
   return joined;
 }
+
+/// deal.II's and Trilinos's words for an iterative linear solve that failed.
+bool linear_solver_failed(const std::string& text)
+{
+  for (const char* word : {"AztecOO", "SolverControl", "NoConvergence", "numerical breakdown",
+                           "did not converge", "Iterative method reported"})
+    if (text.find(word) != std::string::npos)
+      return true;
+  return false;
+}
+
+const char* const linear_solver_remedy =
+  "the implicit far field's linear system could not be solved in this step: its tangent "
+  "(with Far field/Volume averaging = cell, F-bar's, unsymmetric) lost its definiteness over "
+  "the window; shorter windows (fewer Hybrid/Substeps, or Far field/Time step), "
+  "Far field/Volume averaging = none where the far field's tissue is compressible, or "
+  "Far field/Integrator = central difference";
 } // namespace
 
 FailureReport describe_failure(const std::exception& error,
@@ -52,7 +69,7 @@ FailureReport describe_failure(const std::exception& error,
     std::string message = paragraph_after(text, "Additional information:");
     if (message.empty())
       message = "violated condition: " + paragraph_after(text, "The violated condition was:");
-    return {"FE solver failure", message, {}};
+    return {"FE solver failure", message, linear_solver_failed(text) ? linear_solver_remedy : ""};
   }
   return {"breakdown", error.what(), {}};
 }

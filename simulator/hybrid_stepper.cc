@@ -114,7 +114,8 @@ double HybridStepper::energy_balance_error() const
 
 std::string HybridStepper::energy_error_causes() const
 {
-  return "a Time/CFL too large, the interface exchange (Hybrid/Scheme; see the interface "
+  return "a Time/CFL too large (the fixed or roller faces' loss, dissipated_supports_J, closes "
+         "only as the step shrinks), the interface exchange (Hybrid/Scheme; see the interface "
          "energy error in history.csv), or a projectile pushed into a fixed face or another "
          "rigid body";
 }
@@ -137,6 +138,9 @@ std::vector<std::string> HybridStepper::events()
   if (const std::string release = rigid_hold_release_event(solver.mpm(), hold_release_reported);
       !release.empty())
     lines.push_back(release);
+  if (const std::string rotation = rigid_rotation_event(solver.mpm(), rotation_reported);
+      !rotation.empty())
+    lines.push_back(rotation);
   const std::vector<coupling::ZoneConversion>& done = solver.conversions();
   for (; conversions_logged < done.size(); ++conversions_logged)
   {
@@ -189,6 +193,21 @@ std::vector<std::string> HybridStepper::final_warnings() const
       << "interface impulse (largest residual left " << solver.ledger().largest_balance_residual
       << " of the interface's momentum scale; what was left went into the next window): "
       << "shorten the windows (Hybrid/Substeps) or use Far field/Integrator = central difference";
+    warnings.push_back(o.str());
+  }
+  // The interface may lose energy (windows dissipate what varies within them) but not make it.
+  if (const double created = -solver.ledger().energy_error(); created > 0.01 * std::abs(initial_energy))
+  {
+    std::ostringstream o;
+    o << "*** the coupling created " << created << " J at the interface, "
+      << created / std::abs(initial_energy) << " of the scene's initial energy (the far field "
+      << "received more work than the MPM side gave it): ";
+    if (solver.scene().hybrid.window_coupling == coupling::WindowCoupling::dashpot)
+      o << "dashpot windows dissipate only where the far field answers a window's impulse as "
+           "its effective mass says (small strain over the window); use shorter windows "
+           "(Hybrid/Substeps) or Hybrid/Window coupling = balanced";
+    else
+      o << "shorten the windows (Hybrid/Substeps) or lower Time/CFL";
     warnings.push_back(o.str());
   }
   const std::vector<std::string> mpm_warnings = mpm_final_warnings(solver.mpm());
@@ -248,8 +267,8 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
   summary["energy"]["initial_J"] = initial_energy;
   summary["energy"]["kinetic_J"] = m.kinetic_energy + fe.kinetic_energy;
   summary["energy"]["strain_J"] = m.strain_energy + fe.strain_energy;
-  summary["energy"]["dissipated_J"] =
-    m.dissipated_energy + mpm_side.contact_dissipation() + fe.dissipated_energy;
+  summary["energy"]["dissipated_J"] = m.dissipated_energy + mpm_side.contact_dissipation() +
+                                      mpm_side.support_dissipation() + fe.dissipated_energy;
   summary["energy"]["balance_error"] =
     analysis::relative_balance_error(energy, initial_energy);
   summary["hybrid"] = {{"scheme", scheme_name(split.hybrid.scheme)},

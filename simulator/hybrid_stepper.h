@@ -57,12 +57,14 @@ public:
     monitors.restore(in);
     conversions_logged = solver.conversions().size();
     hold_release_reported = solver.mpm().projectile_hold().record().release_step >= 0;
+    rotation_reported = solver.mpm().projectile_rotation().exceeded_step() >= 0;
   }
 
 private:
   coupling::HybridSolver solver;
   std::size_t conversions_logged = 0;
   bool hold_release_reported = false;
+  bool rotation_reported = false;
   ProjectileStart projectile;
   double initial_energy; ///< J, of the whole scene at t = 0
   Eigen::Vector3d initial_momentum; ///< kg m/s, of the whole scene at t = 0

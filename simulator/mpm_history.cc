@@ -10,10 +10,10 @@ namespace vulnus::simulator
 std::vector<std::string> mpm_history_columns()
 {
   return {"time_s", "dt_s", "step", "kinetic_J", "strain_J", "potential_J", "dissipated_material_J",
-          "dissipated_contact_J", "outflow_J", "energy_balance_error", "momentum_x", "momentum_y",
-          "momentum_z", "intact", "failed_matrix", "failed_fiber", "failed_total",
-          "bullet_position_x", "bullet_position_y", "bullet_position_z", "bullet_velocity_x",
-          "bullet_velocity_y", "bullet_velocity_z", "bullet_contact_force_x",
+          "dissipated_contact_J", "dissipated_supports_J", "outflow_J", "energy_balance_error",
+          "momentum_x", "momentum_y", "momentum_z", "intact", "failed_matrix", "failed_fiber",
+          "failed_total", "bullet_position_x", "bullet_position_y", "bullet_position_z",
+          "bullet_velocity_x", "bullet_velocity_y", "bullet_velocity_z", "bullet_contact_force_x",
           "bullet_contact_force_y", "bullet_contact_force_z", "contact_nodes", "active_nodes",
           "points", "target_kinetic_J", "target_momentum_x", "target_momentum_y",
           "target_momentum_z", "support_impulse_x-", "support_impulse_x+", "support_impulse_y-",
@@ -52,6 +52,7 @@ std::vector<double> mpm_history_row(const mpm::Solver& solver, const mpm::SceneD
           d.potential_energy,
           d.dissipated_energy,
           solver.contact_dissipation(),
+          solver.support_dissipation(),
           solver.removed_energy(),
           balance,
           d.momentum[0],

@@ -34,6 +34,10 @@ std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver)
       "about 1 % per halving of the step, and the step follows the projectile's wave speed; "
       "docs/converged_wound.md sections 12-13); subcycling gives the converged answer at the "
       "target's step");
+  if (const std::string surface = rigid_hold_surface_warning(solver); !surface.empty())
+    warnings.push_back(surface);
+  if (const std::string rotation = rigid_rotation_warning(solver); !rotation.empty())
+    warnings.push_back(rotation);
   if (solver.projectile() >= 0)
   {
     // A projectile that left the grid only in part: what is reported of it is what stayed.
@@ -137,9 +141,10 @@ double MpmStepper::energy_balance_error() const
 
 std::string MpmStepper::energy_error_causes() const
 {
-  return "a Time/CFL too large, bodies driven into each other or into a fixed face (a rigid "
-         "body against a prescribed one), or no-slip contact (Contact/Friction coefficient = "
-         "-1) between fast bodies";
+  return "a Time/CFL too large (the contact's and the fixed or roller faces' losses, booked as "
+         "dissipated_contact_J and dissipated_supports_J, close only as the step shrinks), "
+         "bodies driven into each other or into a fixed face (a rigid body against a prescribed "
+         "one), or no-slip contact (Contact/Friction coefficient = -1) between fast bodies";
 }
 
 std::string MpmStepper::blow_up_remedy() const
@@ -159,8 +164,12 @@ std::vector<std::string> MpmStepper::final_warnings() const { return mpm_final_w
 
 std::vector<std::string> MpmStepper::events()
 {
-  const std::string release = rigid_hold_release_event(solver, hold_release_reported);
-  return release.empty() ? std::vector<std::string>{} : std::vector<std::string>{release};
+  std::vector<std::string> lines;
+  for (const std::string& line : {rigid_hold_release_event(solver, hold_release_reported),
+                                  rigid_rotation_event(solver, rotation_reported)})
+    if (!line.empty())
+      lines.push_back(line);
+  return lines;
 }
 
 nlohmann::json MpmStepper::summary(const analysis::RunTotals& run) const

@@ -18,7 +18,8 @@ struct ProjectileStart
 /// The projectile's initial speed and kinetic energy (zeros without a projectile). Collective.
 ProjectileStart projectile_start(const mpm::Solver& solver);
 
-/// The MPM-side warnings of a finished run: a projectile far below yield, points removed.
+/// The MPM-side warnings of a finished run: a projectile far below yield, an exact rigid
+/// surface it did not keep, a rigid projectile that would have turned, points removed.
 std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver);
 
 /// elastic_projectile_note for a finished run ("\n" + note, or empty).
@@ -73,6 +74,7 @@ public:
   {
     solver.restore(in);
     hold_release_reported = solver.projectile_hold().record().release_step >= 0;
+    rotation_reported = solver.projectile_rotation().exceeded_step() >= 0;
   }
 
 private:
@@ -80,5 +82,6 @@ private:
   std::size_t n_points_at_start;
   ProjectileStart projectile; ///< from the initial state, before any restart
   bool hold_release_reported = false;
+  bool rotation_reported = false;
 };
 } // namespace vulnus::simulator

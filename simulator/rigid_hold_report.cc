@@ -40,6 +40,9 @@ std::string rigid_hold_release_event(const mpm::Solver& solver, bool& reported)
     << " turns deformable after step " << r.release_step << " (t = " << r.release_time
     << " s): " << r.reason
     << (solver.subcycles_projectile() ? "; subcycled from here on" : "");
+  if (solver.scene().contact.exact_rigid_surface)
+    o << "; its contact takes its points from here on, not the exact surface (Contact/Rigid "
+         "surface = exact is a rigid body's)";
   return o.str();
 }
 
@@ -56,6 +59,62 @@ std::string rigid_hold_final_note(const mpm::Solver& solver)
     << " s (limit " << hold.pressure_limit() / 1e6 << " MPa), rotation neglected "
     << r.rotation_drift * 1e3 << " mm at its farthest point (limit " << hold.drift_limit() * 1e3
     << " mm)";
+  return o.str();
+}
+
+std::string rigid_hold_surface_warning(const mpm::Solver& solver)
+{
+  const mpm::RigidHoldRecord& r = solver.projectile_hold().record();
+  if (!solver.scene().contact.exact_rigid_surface || !r.considered() || r.held)
+    return {};
+  const std::string name = solver.scene().bodies[solver.projectile()].name;
+  std::ostringstream o;
+  o << std::setprecision(4) << "Contact/Rigid surface = exact: projectile '" << name << "' ";
+  if (r.release_step >= 0)
+    o << "took the exact surface only while held rigid while elastic, up to step "
+      << r.release_step << " (t = " << r.release_time
+      << " s); from there its contact took its points (as Rigid surface = points), and its "
+         "velocity can jump at the switch";
+  else
+    o << "never took the exact surface: it was deformable from the start (" << r.reason
+      << ") and its contact took its points";
+  o << "; 'Material " << solver.scene().bodies[solver.projectile()].material
+    << "/Model = rigid' keeps the exact surface throughout, Time/Rigid projectile while "
+       "elastic = false the points";
+  return o.str();
+}
+
+std::string rigid_rotation_event(const mpm::Solver& solver, bool& reported)
+{
+  const mpm::NeglectedRotation& rotation = solver.projectile_rotation();
+  if (reported || rotation.exceeded_step() < 0)
+    return {};
+  reported = true;
+  std::ostringstream o;
+  o << std::setprecision(3) << "projectile " << solver.scene().bodies[solver.projectile()].name
+    << " (rigid, it only translates): after step " << rotation.exceeded_step() << " (t = "
+    << rotation.exceeded_time() << " s) its contact's moment would have turned it by "
+    << rotation.angle() << " rad, moving its farthest point " << rotation.drift() * 1e3
+    << " mm (limit " << rotation.drift_limit() * 1e3 << " mm)";
+  return o.str();
+}
+
+std::string rigid_rotation_warning(const mpm::Solver& solver)
+{
+  const mpm::NeglectedRotation& rotation = solver.projectile_rotation();
+  if (rotation.exceeded_step() < 0)
+    return {};
+  const mpm::BodyParameters& body = solver.scene().bodies[solver.projectile()];
+  std::ostringstream o;
+  o << std::setprecision(3) << "projectile '" << body.name
+    << "' is rigid and only translates, but its contact's moment would have turned it by "
+    << rotation.angle() << " rad over the run, moving its farthest point "
+    << rotation.drift() * 1e3 << " mm (" << rotation.drift() / solver.scene().cell_size
+    << " cells; limit " << mpm::NeglectedRotation::drift_cells << ", passed at step "
+    << rotation.exceeded_step()
+    << "): its path and wound are those of a projectile that cannot turn; a deformable law "
+       "('Material "
+    << body.material << "/Model = elastic plastic') lets it turn";
   return o.str();
 }
 } // namespace vulnus::simulator

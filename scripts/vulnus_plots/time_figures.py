@@ -7,7 +7,8 @@ from . import style
 
 ENERGY_COLUMNS = [("kinetic_J", "kinetic"), ("strain_J", "strain"), ("potential_J", "potential"),
                   ("dissipated_material_J", "dissipated, material"),
-                  ("dissipated_contact_J", "dissipated, contact"), ("outflow_J", "outflow")]
+                  ("dissipated_contact_J", "dissipated, contact"),
+                  ("dissipated_supports_J", "dissipated, supports"), ("outflow_J", "outflow")]
 FAILED_COLUMNS = [("failed_matrix", 1), ("failed_fiber", 2), ("failed_total", 3)]
 
 

@@ -87,6 +87,7 @@ TEST_P(MpmCheckpointBall, RestoredRunContinuesBitForBit)
   }
   EXPECT_EQ(reference.diagnostics().bodies[1].velocity, restarted.diagnostics().bodies[1].velocity);
   EXPECT_EQ(reference.contact_dissipation(), restarted.contact_dissipation());
+  EXPECT_EQ(reference.support_dissipation(), restarted.support_dissipation());
 }
 
 INSTANTIATE_TEST_SUITE_P(Ball, MpmCheckpointBall, ::testing::Values(false, true),

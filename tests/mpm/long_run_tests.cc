@@ -104,7 +104,8 @@ TEST(MpmLongRun, ARicochetLeavesWhenTheProjectileIsClearOfTheTarget)
             << " m/s\n";
   EXPECT_LT(exit.velocity[1], -0.2 * 2.0);
   EXPECT_GT(exit.velocity[1], -2.0);
-  EXPECT_EQ(analysis::projectile_fate(exit, false, exit.velocity[1], 2.0),
+  EXPECT_EQ(analysis::projectile_fate(exit, false, solver.penetration(), exit.velocity[1],
+                                      scene.projectile_stop_speed),
             "left the target sideways or backwards");
   // Its mass centre never passed the slab's far face: no exit wound, and the summary says so.
   const analysis::WoundSample sample = analysis::collect_wound_sample(solver);

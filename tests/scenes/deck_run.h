@@ -28,11 +28,13 @@ inline std::unique_ptr<mpm::Solver> run_to_end(const std::string& deck_path,
   return solver;
 }
 
-/// (kinetic + strain + dissipated + contact-dissipated + removed - initial) / initial.
+/// (kinetic + strain + dissipated + contact- and support-dissipated + removed - initial) /
+/// initial.
 inline double energy_balance_error(const mpm::Solver& solver, const mpm::SceneDiagnostics& d)
 {
   const double accounted = d.kinetic_energy + d.strain_energy + d.dissipated_energy +
-                           solver.contact_dissipation() + solver.removed_energy();
+                           solver.contact_dissipation() + solver.support_dissipation() +
+                           solver.removed_energy();
   return (accounted - solver.initial_energy()) / solver.initial_energy();
 }
 } // namespace vulnus::scene_tests

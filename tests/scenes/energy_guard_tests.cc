@@ -5,12 +5,16 @@
 // the shock viscosity and the projectile's relaxation it gains 7.7 % by 120 microseconds
 // (5 % at step 140) at CFL 0.4 when the bullet steps with the scene, so the tests run at that
 // step without subcycling and set bounds below that. (Subcycled, the same scene closes its
-// balance to 1e-4: the contact's work on the bullet is booked over its substeps.)
+// balance to 1e-4: the contact's work on the bullet is booked over its substeps.) A restart
+// keeps the warning given before its checkpoint.
 #include "../app/command_runner.h"
 
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
 
 namespace
 {
@@ -21,9 +25,14 @@ const std::string paper_deck = "run '" + source_dir() + "/inputs/paper/anisotrop
 
 /// The bullet driven into a wall that cannot move or deform: the balance error grows to 0.022 in
 /// the impact's first 14 us and ends at 0.032 (0.077 with the contact's booking before stop 61).
+/// The wall and grid are cut to +-10 / +-12 mm across the flight (4 thousand wall points instead
+/// of 25 thousand): the prescribed wall acts only where the bullet (radius 4.5 mm, mushrooming
+/// to about 7) touches it. [TO CHECK when first run: the two figures above on this wall.]
 const std::string bullet_into_wall =
   paper_deck + "--set 'Grid/Cell size=0.002' --set 'Material tissue/Model=rigid' "
                "--set 'Body slab/Rigid motion=prescribed' --set 'Time/End time=1.2e-4' "
+               "--set 'Grid/Domain min=-0.012, -0.02, -0.012' --set 'Grid/Domain max=0.012, 0.035, 0.012' "
+               "--set 'Body slab/Box min=-0.01, 0, -0.01' --set 'Body slab/Box max=0.01, 0.01, 0.01' "
                "--set 'Output/Particle output interval=0' --set 'Time/CFL=0.4' "
                "--set 'Time/Subcycle projectile=false' ";
 
@@ -142,4 +151,35 @@ TEST(EnergyGuard, AFaceLoadThatTakesItsEnergyBackIsNoBlowUp)
             0.01 * energy["external_work_in_J"].get<double>());
   EXPECT_LT(std::abs(energy["balance_error"].get<double>()), 0.005);
   EXPECT_EQ(energy_warning_of(summary), "");
+}
+
+// A restart keeps the warnings the run gave before its checkpoint: summary.json's warnings are
+// the uninterrupted run's. The guard's flag was not in the checkpoint, so a restarted run lost
+// its first crossing's warning (step 600, -0.050) and gave one at a later crossing (step 2860,
+// -0.093) instead. Here the run continues from its newest checkpoint, after the warning.
+TEST(EnergyGuard, ARestartKeepsTheWarningGivenBeforeTheCheckpoint)
+{
+  ScratchDirectory scratch("energy_guard_restart");
+  const std::string arguments = bullet_into_wall + "--set 'Time/Energy balance warning=0.01' "
+                                                   "--set 'Time/Energy balance limit=0' "
+                                                   "--set 'Output/Checkpoint step interval=10' ";
+  const CommandResult reference = run_vulnus(arguments + "--output reference", scratch.path);
+  ASSERT_EQ(reference.exit_status, 0) << reference.out << reference.err;
+  const nlohmann::json expected = summary_of(scratch.path / "reference");
+  const std::string warning = energy_warning_of(expected);
+  ASSERT_NE(warning.find(" at step "), std::string::npos) << warning;
+  const long warned_at = std::stol(warning.substr(warning.find(" at step ") + 9));
+
+  const fs::path run = scratch.path / "restarted";
+  fs::copy(scratch.path / "reference", run, fs::copy_options::recursive);
+  fs::remove(run / "summary.json");
+  long newest = 0; // checkpoints/step_NNNNNNNNNN.chk
+  for (const auto& entry : fs::directory_iterator(run / "checkpoints"))
+    if (entry.path().extension() == ".chk")
+      newest = std::max(newest, std::stol(entry.path().stem().string().substr(5)));
+  ASSERT_GT(newest, warned_at);
+  const CommandResult restarted = run_vulnus(arguments + "--restart restarted", scratch.path);
+  ASSERT_EQ(restarted.exit_status, 0) << restarted.out << restarted.err;
+  EXPECT_NE(restarted.out.find("restarted from"), std::string::npos) << restarted.out;
+  EXPECT_EQ(summary_of(run)["warnings"], expected["warnings"]);
 }

@@ -73,7 +73,10 @@ void expect_momentum_audit_closes(const nlohmann::json& summary)
 TEST(HybridPaperScene, MatchesThePureMpmReferenceWithinFivePercent)
 {
   ScratchDirectory scratch("hybrid_paper");
-  const std::string rigid = "--set 'Material bullet/Model=rigid'";
+  // No particle files between the first and last states (the pure run wrote about ten of 207
+  // thousand points each); the XDMF series of those two is still written.
+  const std::string rigid =
+    "--set 'Material bullet/Model=rigid' --set 'Output/Particle output interval=0'";
   const nlohmann::json pure =
     run_and_read_summary("anisotropic_150ms_coarse.prm", rigid, scratch.path, "pure");
   const nlohmann::json hybrid =

@@ -67,6 +67,32 @@ TEST(FailureReport, CutsADealIIExceptionToItsAdditionalInformation)
   }
 }
 
+TEST(FailureReport, ALinearSolverBreakdownNamesTheImplicitFarFieldsRemedies)
+{
+  // Trilinos's AztecOO, as the implicit far field with F-bar met it in a long window.
+  try
+  {
+    AssertThrow(false, dealii::ExcMessage("AztecOO::Iterate error code -3: numerical breakdown"));
+  }
+  catch (const std::exception& e)
+  {
+    const auto r = describe_failure(e);
+    EXPECT_EQ(r.kind, "FE solver failure");
+    EXPECT_NE(r.remedy.find("Hybrid/Substeps"), std::string::npos) << r.remedy;
+    EXPECT_NE(r.remedy.find("Far field/Volume averaging"), std::string::npos) << r.remedy;
+    EXPECT_NE(r.remedy.find("central difference"), std::string::npos) << r.remedy;
+  }
+  // Not a linear solve: the stepper's own remedy applies.
+  try
+  {
+    AssertThrow(false, dealii::ExcMessage("an inverted element"));
+  }
+  catch (const std::exception& e)
+  {
+    EXPECT_EQ(describe_failure(e).remedy, "");
+  }
+}
+
 TEST(FailureReport, CutsAnyDealIIExceptionToOneParagraph)
 {
   try
