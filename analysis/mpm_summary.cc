@@ -12,9 +12,11 @@ std::string projectile_fate(const mpm::ProjectileExit& exit, const bool through_
                             const mpm::ProjectilePenetration& penetration,
                             const double velocity_now, const double stop_speed)
 {
+  if (exit.recorded && through_exit_face)
+    return "left the target through its far side";
   if (exit.recorded)
-    return through_exit_face ? "left the target through its far side"
-                             : "left the target sideways or backwards";
+    return penetration.stopped() ? "stopped in the target, then left it backwards"
+                                 : "left the target sideways or backwards";
   if (!penetration.entered())
     return "has not reached the target";
   if (penetration.stopped())

@@ -45,8 +45,9 @@ inline double relative_balance_error(const double energy, const double initial)
 /// What became of the projectile, in words (summary "fate"): left the target through its far
 /// side (the exit face of its path, `through_exit_face`), left it sideways or backwards, has
 /// not reached it, stopped in it (the penetration record's stop: at most the stop speed along
-/// the flight once inside, so `fate` and penetration.stopped agree), stopped and now moving
-/// backwards faster than the stop speed, or still moving into it.
+/// the flight once inside), stopped and now moving backwards faster than the stop speed,
+/// stopped and then left it backwards, or still moving into it. `fate` says "stopped" exactly
+/// when penetration.stopped is true.
 std::string projectile_fate(const mpm::ProjectileExit& exit, bool through_exit_face,
                             const mpm::ProjectilePenetration& penetration, double velocity_now,
                             double stop_speed);

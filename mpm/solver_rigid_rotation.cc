@@ -41,9 +41,12 @@ Solver::MassDistribution Solver::mass_distribution(const std::size_t b) const
 
 void Solver::begin_rotation_estimate()
 {
+  // A sphere turned about its centre occupies the same place: its path and wound are the
+  // same whether it turns or not (only a frictional contact's slip would differ).
   const int b = projectile_body;
   if (b < 0 || !materials_of_body[b]->is_rigid() ||
-      parameters.bodies[b].rigid_motion != RigidMotion::free || !contact_active)
+      parameters.bodies[b].rigid_motion != RigidMotion::free || !contact_active ||
+      parameters.bodies[b].shape == BodyShape::sphere)
     return;
   const MassDistribution d = mass_distribution(static_cast<std::size_t>(b));
   if (d.mass > 0.0)

@@ -167,6 +167,12 @@ TEST(Penetration, TheFateAgreesWithTheStopRecordAtAnyImpactSpeed)
   record.record(3e-4, 5.9e-3, -3.0, 1.0);
   EXPECT_EQ(analysis::projectile_fate(no_exit, false, record, -3.0, 1.0),
             "stopped in the target, now moving backwards");
+  mpm::ProjectileExit rebound;
+  rebound.recorded = true;
+  EXPECT_EQ(analysis::projectile_fate(rebound, false, record, -3.0, 1.0),
+            "stopped in the target, then left it backwards");
+  EXPECT_EQ(analysis::projectile_fate(rebound, false, mpm::ProjectilePenetration(1e-3), -3.0, 1.0),
+            "left the target sideways or backwards");
 }
 
 /// A soft gelatin-like block (the elastic-plastic law with the Hugoniot, failure at plastic

@@ -43,6 +43,9 @@ TEST(ValidationScene, GelatinShotEntersWithTheBbsExactMassAndClosesMomentum)
   const double front = -0.1e-3 + d.bodies[bb].max_along - foremost_at_start;
   EXPECT_NEAR(penetration.max_depth(), front, 1e-9);
 
+  // A sphere turned about its centre stays where it is: its neglected rotation is not tracked.
+  EXPECT_FALSE(solver.projectile_rotation().active());
+
   // Momentum: what the bodies hold now, the supports' impulse and the outflow make up the
   // BB's momentum at the start.
   Vector3 now = solver.removed_momentum();
