@@ -356,7 +356,14 @@ Eigen::Vector3d HybridSolver::impulse_in_transit() const
 Eigen::Vector3d HybridSolver::total_momentum() const
 {
   const fem::FeDiagnostics d = fe_solver->diagnostics();
-  return mpm_solver->diagnostics().momentum + to_eigen(d.momentum) + impulse_in_transit();
+  Eigen::Vector3d sum = mpm_solver->diagnostics().momentum + to_eigen(d.momentum) + impulse_in_transit();
+  // Inside a balanced window (a run stopped before its last substep) the far field already
+  // stands at the window's end: its step's interface impulse, booked at the last substep, is
+  // in its momentum but not yet in created.
+  if (!fe_state_at_window_start.empty())
+    for (const mpm::Vector3& impulse : fe_window_impulse)
+      sum -= impulse;
+  return sum;
 }
 
 double HybridSolver::fe_mechanical_energy() const

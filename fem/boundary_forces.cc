@@ -26,11 +26,22 @@ BoundaryForces FarFieldSolver::Data::boundary_forces() const
 
 void FarFieldSolver::Data::integrate_boundary_forces(const double dt)
 {
-  const BoundaryForces end = boundary_forces();
+  BoundaryForces end = boundary_forces();
   // Staggered central difference: v_{n+1/2} - v_{n-1/2} = dt M^{-1} f(u_n), the start state.
   // Velocity Verlet, Newmark and generalized-alpha: v_{n+1} - v_n = dt ((1 - gamma) a_n +
-  // gamma a_{n+1}), exact for the first two (the equations of motion hold at both ends); the
-  // generalized-alpha's hold at its intermediate point, so there the split is approximate.
+  // gamma a_{n+1}), exact for the first two (the equations of motion hold at both ends).
+  // Generalized alpha's hold at its intermediate point: M ((1 - am) a_{n+1} + am a_n) =
+  // F_alpha, so the forces matching a_{n+1} are Y_{n+1} = (X_alpha - am Y_n) / (1 - am) with
+  // X_alpha the boundary forces of the converged system; boundary_now carries Y.
+  const double alpha_m = is_implicit() ? implicit_alpha_m(prm) : 0.0;
+  if (is_implicit() && (alpha_m != 0.0 || implicit_alpha_f(prm) != 0.0))
+  {
+    const BoundaryForces& x = boundary_alpha;
+    for (std::size_t n = 0; n < end.interface.size(); ++n)
+      end.interface[n] = (x.interface[n] - alpha_m * boundary_now.interface[n]) / (1.0 - alpha_m);
+    for (unsigned int b = 0; b <= n_slab_faces; ++b)
+      end.supports[b] = (x.supports[b] - alpha_m * boundary_now.supports[b]) / (1.0 - alpha_m);
+  }
   const double w_end = prm.staggered_velocity ? 0.0 : integrator_gamma(prm);
   const double w_start = 1.0 - w_end;
   interface_impulse_last_step.resize(end.interface.size());

@@ -179,6 +179,10 @@ struct FarFieldSolver::Data
   /// Boundary forces at the current state and their integrals: over the last step for the
   /// interface nodes, since the start (this rank) for the supports.
   BoundaryForces boundary_now;
+  /// Generalized alpha: the boundary forces of the step's converged system, at t_{n+1-af}
+  /// (u_{n+1-af}, a_{n+1-am}), taken before finish_step evaluates the end state; consumed by
+  /// integrate_boundary_forces of the same step.
+  BoundaryForces boundary_alpha;
   std::vector<dealii::Tensor<1, 3>> interface_impulse_last_step;
   std::array<dealii::Tensor<1, 3>, n_slab_faces + 1> support_impulse;
   /// Velocity of each Dirichlet dof when its support impulse was last booked: the supports'

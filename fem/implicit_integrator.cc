@@ -437,6 +437,10 @@ void finish_step(FarFieldSolver::Data& d, ImplicitData& im, const AlphaCoefficie
                  const double dt, const double t_new, const std::vector<double>& a_dirichlet,
                  const EvaluationSums& sums)
 {
+  // The boundary forces of the converged system, where generalized alpha's equations of motion
+  // hold (integrate_boundary_forces).
+  if (c.alpha_m != 0.0 || c.alpha_f != 0.0)
+    d.boundary_alpha = d.boundary_forces();
   // v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}); Dirichlet dofs get their exact value.
   d.velocity = im.v_old;
   d.velocity.add(dt * (1.0 - c.gamma), im.a_old, dt * c.gamma, d.acceleration);
