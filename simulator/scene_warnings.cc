@@ -1,6 +1,7 @@
 // Start-of-run warnings about the scene.
 #include "simulator/scene_warnings.h"
 
+#include "analysis/wound_metrics.h"
 #include "mpm/body_builder.h"
 
 #include <Eigen/Geometry>
@@ -159,7 +160,6 @@ void warn_about_exact_surface_of_deformable_projectile(const mpm::SceneParameter
 void warn_about_unreached_faces(const deck::RunParameters& parameters,
                                 std::vector<std::string>& warnings)
 {
-  static const char* const face_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
   const mpm::SceneParameters& scene = parameters.scene;
   const bool meshed = parameters.method == deck::Method::fe;
   const double reach = meshed ? 1e-6 * scene.cell_size : scene.cell_size;
@@ -170,17 +170,20 @@ void warn_about_unreached_faces(const deck::RunParameters& parameters,
     const mpm::BodyParameters* nearest = nullptr;
     double gap = std::numeric_limits<double>::infinity();
     for (const mpm::BodyParameters& body : scene.bodies)
-      if (const mpm::NamedMaterial* m = mpm::find_material(scene, body.material);
-          m != nullptr && m->parameters.model != "rigid" &&
-          mpm::gap_to_domain_face(scene, body, face) < gap)
+    {
+      const mpm::NamedMaterial* m = mpm::find_material(scene, body.material);
+      if (m == nullptr || m->parameters.model == "rigid")
+        continue;
+      if (const double g = mpm::gap_to_domain_face(scene, body, face); g < gap)
       {
         nearest = &body;
-        gap = mpm::gap_to_domain_face(scene, body, face);
+        gap = g;
       }
+    }
     if (nearest == nullptr || gap < reach)
       continue;
     std::ostringstream message;
-    message << "Grid/Boundary conditions/" << face_names[face] << " = "
+    message << "Grid/Boundary conditions/" << analysis::box_face_name(face) << " = "
             << (scene.domain_faces[face] == mpm::FaceCondition::fixed ? "fixed" : "roller")
             << ": no deformable body reaches that face (the nearest, '" << nearest->name
             << "', is " << gap * 1e3 << " mm from it; "
