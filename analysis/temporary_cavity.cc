@@ -86,6 +86,7 @@ void TemporaryCavity::sample(const mpm::Solver& solver)
   // boundary then leaves no empty bin behind it, which would read as a wall jumping outwards.
   const double reach = 2.0 * half_spacing;
   const double sector_angle = 2.0 * pi / sectors;
+  const bool ring_points = solver.scene().axisymmetric;
   // Negated distances, so that one element-wise max over the ranks gives the nearest.
   std::fill(nearest.begin(), nearest.end(), -radius_cap);
   constexpr double inf = std::numeric_limits<double>::infinity();
@@ -114,7 +115,8 @@ void TemporaryCavity::sample(const mpm::Solver& solver)
       double angle = std::atan2(v, u);
       if (angle < 0.0)
         angle += 2.0 * pi;
-      const double half_width = r > reach ? std::asin(reach / r) : pi;
+      // An axisymmetric scene's point is a ring: it stands in every sector.
+      const double half_width = r > reach && !ring_points ? std::asin(reach / r) : pi;
       const auto lowest = static_cast<long>(std::floor((angle - half_width) / sector_angle));
       const auto highest = static_cast<long>(std::floor((angle + half_width) / sector_angle));
       constexpr long n_all = sectors;
@@ -136,6 +138,8 @@ void TemporaryCavity::sample(const mpm::Solver& solver)
   // Beyond a hybrid's MPM points lies the far field's material: no wall is farther than them.
   std::array<double, sectors> edge = distances_to_the_box(solver.scene().domain_min,
                                                           solver.scene().domain_max);
+  if (ring_points) // the grid's edge is the radius of its plane
+    edge.fill(solver.scene().domain_max[0]);
   if (!solver.scene().deck_bodies.empty())
   {
     const mpm::Vector3 low = mpm::Vector3(-extent[0], -extent[1], -extent[2]).array() - half_spacing;

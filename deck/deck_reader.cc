@@ -3,6 +3,7 @@
 #include "deck/deck_reader.h"
 
 #include "deck/deck_checks.h"
+#include "deck/axisymmetric_checks.h"
 #include "deck/method_checks.h"
 #include "deck/deck_entries.h"
 #include "deck/deck_sections.h"
@@ -389,6 +390,8 @@ RunParameters read_run_parameters_from_text(const std::string& text, const std::
     indices.push_back(source.index.get());
   std::vector<std::string> problems = check_run_parameters(parameters, EntryLocator(indices));
   for (const std::string& p : check_method(parameters, EntryLocator(indices)))
+    problems.push_back(p);
+  for (const std::string& p : check_axisymmetric(parameters, EntryLocator(indices)))
     problems.push_back(p);
   if (!problems.empty())
     throw DeckError(problems);

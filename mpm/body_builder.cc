@@ -2,6 +2,7 @@
 #include "mpm/body_builder.h"
 
 #include "materials/fiber_field.h"
+#include "mpm/axisymmetry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,7 +95,9 @@ double gap_to_domain_face(const SceneParameters& scene, const BodyParameters& bo
 
 namespace
 {
-/// Calls f(x) for each lattice point of `body` (n per cell and axis, at sub-cell centres).
+/// Calls f(x, volume) for each lattice point of `body` (n per cell and axis, at sub-cell
+/// centres). On an axisymmetric grid the lattice is the r-y plane's (z = 0, r > 0) and each
+/// point the ring it sweeps about the axis.
 template <class F> void for_each_point_of(const BodyParameters& body, const Grid& grid, F&& f)
 {
   const double spacing = grid.cell_size() / body.particles_per_cell;
@@ -106,13 +109,21 @@ template <class F> void for_each_point_of(const BodyParameters& body, const Grid
     first[d] = static_cast<long>(std::floor((lower[d] - grid.origin()[d]) / spacing));
     last[d] = static_cast<long>(std::ceil((upper[d] - grid.origin()[d]) / spacing));
   }
+  if (grid.axisymmetric())
+  {
+    first[0] = std::max(first[0], 0L);
+    first[2] = last[2] = 0;
+  }
+  const double cube = spacing * spacing * spacing;
   for (long k = first[2]; k <= last[2]; ++k)
     for (long j = first[1]; j <= last[1]; ++j)
       for (long i = first[0]; i <= last[0]; ++i)
       {
-        const Vector3 x = grid.origin() + spacing * Vector3(i + 0.5, j + 0.5, k + 0.5);
+        Vector3 x = grid.origin() + spacing * Vector3(i + 0.5, j + 0.5, k + 0.5);
+        if (grid.axisymmetric())
+          x[2] = 0.0;
         if (body_contains(body, x))
-          f(x);
+          f(x, grid.axisymmetric() ? ring_volume(x[0], spacing * spacing) : cube);
       }
 }
 } // namespace
@@ -121,7 +132,7 @@ void visit_body_points(const SceneParameters& scene, const Grid& grid,
                        const std::function<void(const Vector3&)>& visit)
 {
   for (const BodyParameters& body : scene.bodies)
-    for_each_point_of(body, grid, visit);
+    for_each_point_of(body, grid, [&](const Vector3& x, double) { visit(x); });
 }
 
 void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles,
@@ -134,7 +145,7 @@ void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& par
   // leave the old copies in the resident set).
   std::size_t n_stored = particles.size(), n_plastic = particles.plastic_pool.size();
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
-    for_each_point_of(scene.bodies[b], grid, [&](const Vector3& x) {
+    for_each_point_of(scene.bodies[b], grid, [&](const Vector3& x, double) {
       const bool stored = !keep || keep(x);
       n_stored += stored;
       n_plastic += stored && plastic(b);
@@ -145,10 +156,8 @@ void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& par
   {
     const BodyParameters& body = scene.bodies[b];
     particles.start_body();
-    const double spacing = grid.cell_size() / body.particles_per_cell;
-    const double volume = spacing * spacing * spacing;
     const std::uint32_t first_id = next_id;
-    for_each_point_of(body, grid, [&](const Vector3& x) {
+    for_each_point_of(body, grid, [&](const Vector3& x, const double volume) {
       const std::uint32_t id = next_id++;
       if (keep && !keep(x))
         return;

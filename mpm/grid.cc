@@ -7,8 +7,9 @@
 
 namespace vulnus::mpm
 {
-Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double cell_size)
-    : domain_min(domain_min_), h(cell_size), inverse_h(1.0 / cell_size)
+Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double cell_size,
+           const bool axisymmetric)
+    : domain_min(domain_min_), h(cell_size), inverse_h(1.0 / cell_size), of_revolution(axisymmetric)
 {
   if (!(cell_size > 0.0))
     throw std::invalid_argument("Grid: the cell size must be positive");
@@ -20,6 +21,8 @@ Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double 
                                   std::to_string(d));
   }
   n_cells = cell_counts(domain_min_, domain_max_, cell_size);
+  if (axisymmetric)
+    n_cells[2] = 1;
   for (int d = 0; d < 3; ++d)
     n_nodes_box[d] = n_cells[d] + 1 + 2 * padding;
   domain_max = domain_min + h * Vector3(n_cells[0], n_cells[1], n_cells[2]);

@@ -20,7 +20,10 @@ public:
   static constexpr int padding = 2;
 
   Grid() = default;
-  Grid(const Vector3& domain_min, const Vector3& domain_max, double cell_size);
+  /// `axisymmetric`: x is the radius r >= 0, y the axis, z one cell across the r-y plane
+  /// (mpm/axisymmetry.h); shape functions then have no z gradient.
+  Grid(const Vector3& domain_min, const Vector3& domain_max, double cell_size,
+       bool axisymmetric = false);
 
   /// Cells along each axis of the grid over [domain_min, domain_max] (the box is rounded up
   /// to whole cells), without building it.
@@ -28,6 +31,7 @@ public:
                                         double cell_size);
 
   double cell_size() const { return h; }
+  bool axisymmetric() const { return of_revolution; }
   double inverse_cell_size() const { return inverse_h; }
   const Vector3& origin() const { return domain_min; }
   const Vector3& upper_corner() const { return domain_max; }
@@ -94,6 +98,7 @@ private:
   Vector3 domain_max = Vector3::Zero();
   double h = 1.0;
   double inverse_h = 1.0;
+  bool of_revolution = false;
   std::array<int, 3> n_cells{{0, 0, 0}};
   std::array<std::int64_t, 3> n_nodes_box{{0, 0, 0}};
   // Before numbering, slot_of_key holds marks: unmarked, contested, or the one share.

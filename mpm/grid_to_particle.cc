@@ -167,6 +167,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
   const double dt = s.time_step;
   const bool midpoint = s.deformation_update == DeformationUpdate::midpoint;
   const bool affine = s.affine;
+  const bool axisymmetric = grid.axisymmetric();
   if (averaging)
     averaging->prepare(grid, particles.size());
   with_shape(transfer.shape,
@@ -208,6 +209,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    const Vector3 x_start = particles.position[p];
                    Tensor2 L = Tensor2::Zero();
                    Vector3 v = Vector3::Zero();
+                   double radial_velocity = 0.0;
                    for_each_node<shape>(
                        grid, lp, particles.position[p], F,
                        [&](const std::int64_t key, const double w, const Vector3& grad_w)
@@ -215,13 +217,17 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                          const std::size_t e = grid.slot(key) * n_bodies + b;
                          L.noalias() += velocity_for_gradient[e] * grad_w.transpose();
                          v += w * velocity_new[e];
+                         radial_velocity += w * velocity_for_gradient[e][0];
                        });
                    particles.position[p] += dt * v;
                    // APIC's affine velocity is this L: for MUSL from the re-projected
                    // velocities, mass-weighted means of point velocities, so a light node's
-                   // v + dt f / m never reaches the scatter through it.
+                   // v + dt f / m never reaches the scatter through it. Its hoop rate is left
+                   // out: the nodes across the hoop direction are one ring.
                    if (affine)
                      particles.affine_velocity[p] = L.cast<float>();
+                   if (axisymmetric)
+                     L(2, 2) = radial_velocity / x_start[0];
                    const bool failed = particles.failure[p] != 0;
                    const bool debris = particles.failure[p] == materials::total_failure;
                    const double J_old =

@@ -78,6 +78,9 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
     const double paired = pair ? pair->volume_mean_stress[p] : 0.0;
     if (paired != 0.0)
       volume_stress.diagonal().array() -= paired;
+    // The hoop stress's pull towards the axis (mpm/axisymmetry.h).
+    const double hoop =
+      grid.axisymmetric() ? volume_stress(2, 2) / particles.position[p][0] : 0.0;
     auto add = [&](const std::int64_t key, const double w, const Vector3& grad_w,
                    const Vector3& momentum)
     {
@@ -89,6 +92,7 @@ void scatter(const Particles& particles, const Grid& grid, const TransferSetting
         node.force += w * point_force[p] - volume_stress * grad_w;
       else
         node.force -= volume_stress * grad_w;
+      node.force[0] -= hoop * w;
       if constexpr (with_normals)
       {
         node.mass_gradient += m * grad_w;

@@ -11,7 +11,8 @@
 namespace vulnus::mpm
 {
 ProjectileSubcycle::ProjectileSubcycle(const Grid& scene_grid, const SubcycleStages& settings)
-  : grid(scene_grid.origin(), scene_grid.upper_corner(), scene_grid.cell_size()), stages(settings)
+  : grid(scene_grid.origin(), scene_grid.upper_corner(), scene_grid.cell_size(),
+         scene_grid.axisymmetric()), stages(settings)
 {
   // One body on its own grid: no contact, and no ownership test (every rank of a distributed
   // run advances the whole body; the scene's test would look its keys up in the scene's grid).

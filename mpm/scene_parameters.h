@@ -131,6 +131,9 @@ struct SceneParameters : scene::SceneDescription
   /// Points that leave the grid: removed (their energy and momentum booked as outflow) or,
   /// when false, the run stops as a blow-up.
   bool remove_points_leaving_grid = false;
+  /// The scene turns about the y axis (x = z = 0) and is solved in its r-y half plane
+  /// (mpm/axisymmetry.h): points are rings, the grid one cell thick.
+  bool axisymmetric = false;
   /// The bodies as the deck draws them, when the MPM scene holds only a part of one (a
   /// hybrid's zone): the projectile's path enters and leaves the target through their
   /// surfaces. Empty: `bodies`.

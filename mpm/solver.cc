@@ -2,6 +2,7 @@
 #include "mpm/solver.h"
 
 #include "materials/material_registry.h"
+#include "mpm/axisymmetry.h"
 #include "mpm/body_builder.h"
 #include "mpm/nonlocal_failure.h"
 #include "materials/material_parameters.h"
@@ -16,9 +17,15 @@
 
 namespace vulnus::mpm
 {
-Solver::Solver(const SceneParameters& scene, const MPI_Comm communicator)
-  : parameters(scene), ranks(communicator), grid(scene.domain_min, scene.domain_max, scene.cell_size)
+Solver::Solver(const SceneParameters& deck, const MPI_Comm communicator)
+  : parameters(deck.axisymmetric ? plane_of_revolution(deck) : deck), ranks(communicator),
+    grid(parameters.domain_min, parameters.domain_max, parameters.cell_size, parameters.axisymmetric)
 {
+  const SceneParameters& scene = parameters;
+  if (scene.axisymmetric && ranks.distributed())
+    throw std::invalid_argument("Grid/Dimension = axisymmetric runs on one MPI rank; use threads");
+  if (scene.axisymmetric && revolved(scene.gravity) != scene.gravity)
+    throw std::invalid_argument("an axisymmetric scene's gravity must be along the axis y");
   const std::size_t n_bodies = scene.bodies.size();
   if (n_bodies == 0)
     throw std::invalid_argument("Scene/Bodies: no body; name at least one");
@@ -212,7 +219,8 @@ void Solver::advance_projectile_substeps(const double dt)
   peak_yield_ratio[b] = std::max(peak_yield_ratio[b], result.max_von_mises_over_yield);
   if (ranks.rank() == 0) // every rank advanced the same points; impulses are summed later
     for (int f = 0; f < 6; ++f)
-      support_impulse_here[f] += result.support_impulse[f];
+      support_impulse_here[f] +=
+        parameters.axisymmetric ? revolved(result.support_impulse[f]) : result.support_impulse[f];
   accumulated_contact_dissipation -= result.contact_work; // a total on every rank
   accumulated_support_dissipation += result.support_loss; // likewise
   const long failed = result.failed_point - static_cast<long>(first_of_mine);
@@ -374,6 +382,8 @@ void Solver::advance(const double cap)
   if (const RunFailure failure = ranks.first_failure(rigid_meeting_problem(dt)); !failure.empty())
     throw BlowUp(failure);
   reduce_contact_result();
+  if (parameters.axisymmetric)
+    revolve_step_results();
   const Vector3 held_velocity =
     rigid_hold.record().held ? grid_settings.rigid_velocity[projectile_body] : Vector3::Zero();
   accumulated_contact_dissipation += grid_result.contact_dissipation;
@@ -637,7 +647,8 @@ void Solver::remove_points_outside_grid()
   ranks.sum(outflow, 5);
   n_removed += static_cast<std::size_t>(outflow[0]);
   outflow_energy += outflow[1];
-  outflow_momentum += Vector3(outflow[2], outflow[3], outflow[4]);
+  const Vector3 momentum_out(outflow[2], outflow[3], outflow[4]);
+  outflow_momentum += parameters.axisymmetric ? revolved(momentum_out) : momentum_out;
 }
 
 std::string Solver::describe_point(const std::size_t p) const

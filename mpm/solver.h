@@ -304,6 +304,8 @@ private:
   void sum_node_data_with_neighbours();
   void sum_projected_momenta_with_neighbours();
   void reduce_contact_result();
+  /// Axisymmetric: the step's contact forces and supports' impulses of the revolved scene.
+  void revolve_step_results();
   void remove_points_outside_grid();
   std::string describe_point(std::size_t p) const;
 

@@ -4,6 +4,8 @@
 // reductions of diagnostics, contact results and errors over all ranks.
 #include "mpm/solver.h"
 
+#include "mpm/axisymmetry.h"
+
 #include "mpm/body_builder.h"
 #include "mpm/point_transfer.h"
 
@@ -229,6 +231,8 @@ void Solver::reduce_contact_result()
 SceneDiagnostics Solver::diagnostics() const
 {
   SceneDiagnostics d = compute_diagnostics(particles, flight_axis, parameters.gravity);
+  if (parameters.axisymmetric) // one rank (Solver's constructor)
+    revolve(d);
   if (!ranks.distributed())
     return d;
   // Sums: energies and momentum, then per body mass, first moments, momentum and energies.

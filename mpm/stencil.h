@@ -172,6 +172,10 @@ inline void for_each_node(const Grid& grid, const double half_size_cells, const 
       else
         gimp_axis_weights(s[d], half_size_cells, inverse_h, w[d]);
     }
+    // The r-y plane's third axis is the hoop direction: nothing varies along it.
+    if (grid.axisymmetric())
+      for (int k = 0; k < n; ++k)
+        w[2].derivative[k] = 0.0;
     for (int k = 0; k < n; ++k)
       for (int j = 0; j < n; ++j)
       {
