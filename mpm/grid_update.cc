@@ -42,23 +42,30 @@ void apply_face_conditions(const Grid& grid, const FaceConditions& faces, const 
 {
   const auto ijk = grid.node_ijk(key);
   const auto& n = grid.cells();
+  // The supported face of this node on each axis, and its first fixed face.
+  int face_on_axis[3] = {-1, -1, -1};
+  int first_fixed = -1;
   for (int d = 0; d < 3; ++d)
   {
     const bool on_lower = ijk[d] <= 0, on_upper = ijk[d] >= n[d];
     if (!on_lower && !on_upper)
       continue;
     const int face = on_lower ? 2 * d : 2 * d + 1;
-    if (faces[face] == FaceCondition::fixed)
-    {
-      impulse[face] -= mass * velocity;
-      velocity.setZero();
-      return;
-    }
-    if (faces[face] == FaceCondition::roller)
-    {
-      impulse[face][d] -= mass * velocity[d];
-      velocity[d] = 0.0;
-    }
+    if (faces[face] == FaceCondition::fixed || faces[face] == FaceCondition::roller)
+      face_on_axis[d] = face;
+    if (faces[face] == FaceCondition::fixed && first_fixed < 0)
+      first_fixed = face;
+  }
+  // A node on an edge or corner books each component on the face normal to it (the z- face's
+  // normal reaction at the x-/z- edge is the z- face's), a tangential one on its fixed face.
+  for (int d = 0; d < 3; ++d)
+  {
+    const bool stopped = first_fixed >= 0 || face_on_axis[d] >= 0;
+    if (!stopped)
+      continue;
+    const int face = face_on_axis[d] >= 0 ? face_on_axis[d] : first_fixed;
+    impulse[face][d] -= mass * velocity[d];
+    velocity[d] = 0.0;
   }
 }
 

@@ -96,7 +96,9 @@ bool any_support(const FaceConditions& faces);
 /// Applies the domain face conditions to a nodal velocity of node `key`.
 void apply_face_conditions(const Grid& grid, const FaceConditions& faces, std::int64_t key,
                            Vector3& velocity);
-/// The same, adding the impulse mass * (change of velocity) to the face that imposed it.
+/// The same, adding the impulse mass * (change of velocity) to the face that imposed it: on an
+/// edge or corner each component to the supported face normal to it, a component no supported
+/// face is normal to to the node's first fixed face.
 void apply_face_conditions(const Grid& grid, const FaceConditions& faces, std::int64_t key,
                            double mass, Vector3& velocity, std::array<Vector3, 6>& impulse);
 

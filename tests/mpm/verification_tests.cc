@@ -136,6 +136,41 @@ TEST(MpmVerification, FaceConditionsOnNodes)
   EXPECT_EQ(beyond_fixed, Vector3::Zero());
 }
 
+// A node on the edge of two supported faces books each velocity component's impulse on the
+// face normal to it (the z- face's normal reaction there is the z- face's, not the x- face's
+// shear), a component along the edge on the first fixed face; a roller takes its normal.
+TEST(MpmVerification, EdgeNodesBookEachComponentOnTheFaceNormalToIt)
+{
+  const mpm::Grid grid(Vector3::Zero(), Vector3(4e-3, 4e-3, 4e-3), 1e-3);
+  using F = mpm::FaceCondition;
+  const double m = 2.0;
+  const Vector3 v(1.0, 2.0, 3.0);
+  const mpm::FaceConditions fixed_xz = {{F::fixed, F::free, F::free, F::free, F::fixed, F::free}};
+  std::array<Vector3, 6> impulse;
+  impulse.fill(Vector3::Zero());
+  Vector3 on_edge = v;
+  mpm::apply_face_conditions(grid, fixed_xz, grid.node_key(0, 2, 0), m, on_edge, impulse);
+  EXPECT_EQ(on_edge, Vector3::Zero());
+  EXPECT_EQ(impulse[0], Vector3(-2.0, -4.0, 0.0)); // x-: its normal and the edge's direction
+  EXPECT_EQ(impulse[4], Vector3(0.0, 0.0, -6.0));  // z-: its normal
+  // Fixed x-, roller y+: the y+ normal is the roller's, the rest the fixed face's.
+  const mpm::FaceConditions fixed_roller = {{F::fixed, F::free, F::free, F::roller, F::free, F::free}};
+  impulse.fill(Vector3::Zero());
+  Vector3 on_corner = v;
+  mpm::apply_face_conditions(grid, fixed_roller, grid.node_key(0, 4, 2), m, on_corner, impulse);
+  EXPECT_EQ(on_corner, Vector3::Zero());
+  EXPECT_EQ(impulse[0], Vector3(-2.0, 0.0, -6.0));
+  EXPECT_EQ(impulse[3], Vector3(0.0, -4.0, 0.0));
+  // Two rollers: each its own normal; the free component stays.
+  const mpm::FaceConditions rollers = {{F::roller, F::free, F::roller, F::free, F::free, F::free}};
+  impulse.fill(Vector3::Zero());
+  Vector3 on_rollers = v;
+  mpm::apply_face_conditions(grid, rollers, grid.node_key(0, 0, 2), m, on_rollers, impulse);
+  EXPECT_EQ(on_rollers, Vector3(0.0, 0.0, 3.0));
+  EXPECT_EQ(impulse[0], Vector3(-2.0, 0.0, 0.0));
+  EXPECT_EQ(impulse[2], Vector3(0.0, -4.0, 0.0));
+}
+
 TEST(MpmVerification, RollerFaceLetsABodySlideAlongIt)
 {
   // A block resting on a y- roller face and sliding along x and z translates exactly.
