@@ -196,7 +196,14 @@ std::map<types::global_dof_index, DirichletCandidate> collect_face_dofs_and_supp
                 continue;
               }
             DirichletCandidate& current = candidates[dof];
-            if (candidate.priority > current.priority)
+            // Two zero conditions on an edge or corner hold the dof alike; its reaction is
+            // booked on the face normal to its component (the z- face's normal reaction at
+            // the x-/z- edge is the z- face's, whichever face came first).
+            const bool normal_of_equal_zero =
+              candidate.priority == current.priority &&
+              candidate.dof.source == DirichletSource::zero &&
+              current.dof.source == DirichletSource::zero && b / 2 == component;
+            if (candidate.priority > current.priority || normal_of_equal_zero)
               current = candidate;
           }
         }

@@ -5,6 +5,7 @@
 #include "io/run_directory.h"
 #include "simulator/hybrid_history.h"
 #include "simulator/rigid_hold_report.h"
+#include "simulator/support_resolution.h"
 
 #include <omp.h>
 
@@ -169,6 +170,25 @@ std::vector<double> HybridStepper::history_row() const
   return hybrid_history_row(solver, initial_energy);
 }
 
+namespace
+{
+/// The far field's cells on its fixed and roller faces against the grid's cell. Collective.
+std::array<FaceResolution, 6> far_field_support_resolution(const coupling::HybridSolver& solver)
+{
+  const std::array<double, fem::n_slab_faces> coarsest = solver.fe().coarsest_cells_on_faces();
+  std::array<double, 6> cells{};
+  std::array<bool, 6> supported{};
+  for (unsigned int f = 0; f < fem::n_slab_faces; ++f)
+  {
+    using C = fem::FaceParameters::Condition;
+    const C c = solver.scene().fe.faces[f].condition;
+    cells[f] = coarsest[f];
+    supported[f] = c == C::fixed || c == C::roller;
+  }
+  return support_resolution(cells, supported, solver.scene().fe.interface_cell_size);
+}
+} // namespace
+
 std::vector<std::string> HybridStepper::final_warnings() const
 {
   std::vector<std::string> warnings;
@@ -210,6 +230,9 @@ std::vector<std::string> HybridStepper::final_warnings() const
       o << "shorten the windows (Hybrid/Substeps) or lower Time/CFL";
     warnings.push_back(o.str());
   }
+  const std::vector<std::string> coarse_supports = support_resolution_warnings(
+    far_field_support_resolution(solver), solver.scene().fe.interface_cell_size);
+  warnings.insert(warnings.end(), coarse_supports.begin(), coarse_supports.end());
   const std::vector<std::string> mpm_warnings = mpm_final_warnings(solver.mpm());
   warnings.insert(warnings.end(), mpm_warnings.begin(), mpm_warnings.end());
   return warnings;
@@ -226,6 +249,7 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
   const fem::FeDiagnostics fe = solver.fe().diagnostics();
   const std::array<mpm::Vector3, 6> supports = mpm_side.support_impulses(); // collective
   const Eigen::Vector3d momentum_now = solver.total_momentum();               // collective
+  const std::array<FaceResolution, 6> resolution = far_field_support_resolution(solver);
   const mpm::RankGroup& ranks = mpm_side.rank_group();
   totals.mpi_bytes_sent = ranks.sum(ranks.bytes_sent());
   if (ranks.rank() != 0)
@@ -246,6 +270,13 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
     const mpm::Vector3 total = supports[f] + fe_impulse;
     const char* const face = analysis::box_face_name(static_cast<int>(f));
     summary["supports"][face]["impulse_N_s"] = {total[0], total[1], total[2]};
+    if (resolution[f].supported)
+    {
+      // The far field's cells there, and whether the impulse is within the resolution rule.
+      summary["supports"][face]["far_field_cell_m"] = resolution[f].coarsest_cell;
+      summary["supports"][face]["far_field_cell_over_grid_cell"] = resolution[f].over_grid_cell;
+      summary["supports"][face]["far_field_resolves_impulse"] = resolution[f].resolved;
+    }
     mpm_split[face] = {supports[f][0], supports[f][1], supports[f][2]};
     fe_split[face] = {fe_impulse[0], fe_impulse[1], fe_impulse[2]};
     audit.add_support(total);

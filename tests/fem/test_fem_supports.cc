@@ -4,11 +4,14 @@
 // staggered step; implicit: Newmark), and the free faces must book none. The driven cases
 // also push the x- face with a prescribed half-sine velocity (a support whose dofs move: their
 // momentum change is booked exactly, not through an acceleration of the prescribed profile).
+// A slab driven into the edge of two fixed faces books each face's normal reaction on it.
 #include "fem/far_field_solver.h"
+#include "fem/mesh_builder.h"
 #include "fem_test_scenes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -79,6 +82,77 @@ TEST_P(FeSupports, MomentumChangeIsTheSupportsImpulse)
     {
       EXPECT_EQ(d.support_impulses[b].norm(), 0.0) << "face " << b;
     }
+  }
+}
+
+// A square slab driven diagonally into the edge of its fixed x- and z- faces: by the x <-> z
+// symmetry each face's normal impulse is the other's. The edge dofs are held by both faces;
+// each component's reaction is booked on the face normal to it (before, the first face took
+// the edge's whole reaction, and the z- face missed its normal share there).
+TEST(FeSupportEdges, EachFaceBooksItsNormalReactionAtTheEdge)
+{
+  FeSceneParameters p;
+  p.slab_min = {{0.0, 0.0, 0.0}};
+  p.slab_max = {{0.008, 0.004, 0.008}};
+  p.interface_cell_size = 0.002;
+  p.far_cell_size = 0.002;
+  p.grading_ratio = 1.0;
+  p.integrator = TimeIntegrator::central_difference;
+  for (auto& face : p.faces)
+    face.condition = FaceParameters::Condition::free;
+  p.faces[0].condition = FaceParameters::Condition::fixed; // x-
+  p.faces[4].condition = FaceParameters::Condition::fixed; // z-
+  FarFieldSolver solver(p, MPI_COMM_WORLD);
+  solver.setup();
+  solver.set_initial_velocity([](const Point<3>&) {
+    Tensor<1, 3> v;
+    v[0] = -0.2;
+    v[2] = -0.2;
+    return v;
+  });
+  const Tensor<1, 3> p0 = solver.diagnostics().momentum;
+  while (solver.time() < 2e-4)
+    solver.advance(std::min(solver.next_time_step(), 2e-4 - solver.time()));
+  const FeDiagnostics d = solver.diagnostics();
+  const double x_normal = d.support_impulses[0][0], z_normal = d.support_impulses[4][2];
+  std::cout << "x- normal impulse " << x_normal << ", z- normal impulse " << z_normal
+            << ", x- impulse along z " << d.support_impulses[0][2] << '\n';
+  EXPECT_GT(x_normal, 0.1 * p0.norm());
+  EXPECT_NEAR(z_normal, x_normal, 1e-9 * p0.norm());
+  // The shear each face takes from the other's direction is symmetric too.
+  EXPECT_NEAR(d.support_impulses[0][2], d.support_impulses[4][0], 1e-9 * p0.norm());
+}
+
+// The coarsest cell on each slab face: the graded cells' largest width on the faces they
+// reach (the hole's sides grow from 1 mm by 2 up to 4 mm), the uniform cell elsewhere.
+TEST(FeSupportEdges, CoarsestCellsOnTheFacesAreTheGradedOnes)
+{
+  FeSceneParameters p;
+  p.slab_min = {{0.0, 0.0, 0.0}};
+  p.slab_max = {{0.024, 0.004, 0.024}};
+  p.has_hole = true;
+  p.hole_min = {{0.009, 0.0, 0.009}};
+  p.hole_max = {{0.015, 0.004, 0.015}};
+  p.interface_cell_size = 0.001;
+  p.far_cell_size = 0.004;
+  p.grading_ratio = 2.0;
+  FarFieldSolver solver(p, MPI_COMM_WORLD);
+  solver.setup();
+  const std::vector<double> steps =
+    graded_step_sizes(0.0, 0.024, 0.009, 0.015, 0.001, 0.004, 2.0);
+  const double coarsest = *std::max_element(steps.begin(), steps.end());
+  EXPECT_GT(coarsest, 3e-3);
+  const std::array<double, n_slab_faces> cells = solver.coarsest_cells_on_faces();
+  for (unsigned int b = 0; b < n_slab_faces; ++b)
+  {
+    EXPECT_NEAR(cells[b], coarsest, 1e-12) << "face " << b;
+  }
+  p.far_cell_size = 0.001;
+  FarFieldSolver uniform(p, MPI_COMM_WORLD);
+  uniform.setup();
+  for (const double cell : uniform.coarsest_cells_on_faces())
+  {
+    EXPECT_NEAR(cell, 0.001, 1e-12);
   }
 }
 
