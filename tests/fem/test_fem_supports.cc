@@ -117,10 +117,12 @@ TEST(FeSupportEdges, EachFaceBooksItsNormalReactionAtTheEdge)
   const double x_normal = d.support_impulses[0][0], z_normal = d.support_impulses[4][2];
   std::cout << "x- normal impulse " << x_normal << ", z- normal impulse " << z_normal
             << ", x- impulse along z " << d.support_impulses[0][2] << '\n';
+  // Equal within the one-point element's own asymmetry (0.13 % measured); the edge's share
+  // missing from z- made it 11 % smaller.
   EXPECT_GT(x_normal, 0.1 * p0.norm());
-  EXPECT_NEAR(z_normal, x_normal, 1e-9 * p0.norm());
+  EXPECT_NEAR(z_normal, x_normal, 0.01 * x_normal);
   // The shear each face takes from the other's direction is symmetric too.
-  EXPECT_NEAR(d.support_impulses[0][2], d.support_impulses[4][0], 1e-9 * p0.norm());
+  EXPECT_NEAR(d.support_impulses[0][2], d.support_impulses[4][0], 0.01 * x_normal);
 }
 
 // The coarsest cell on each slab face: the graded cells' largest width on the faces they
