@@ -40,7 +40,10 @@ std::string support_condition(const mpm::Solver& solver, const int face,
                               const mpm::Vector3& impulse)
 {
   const mpm::SceneParameters& scene = solver.scene();
-  const std::string name = face_condition_name(scene.domain_faces[face]);
+  if (scene.axisymmetric && face != 1 && face != 2 && face != 3) // mpm/axisymmetry.h
+    return face == 0 ? "axis (v_r = 0)" : "hoop direction (no velocity across the plane)";
+  const std::string name = std::string(face_condition_name(scene.domain_faces[face])) +
+                           (scene.axisymmetric && face == 1 ? " (the surface r = R)" : "");
   if (scene.domain_faces[face] == mpm::FaceCondition::free || impulse != mpm::Vector3::Zero() ||
       solver.shared_nodes().partner != nullptr)
     return name;

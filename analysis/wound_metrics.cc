@@ -54,7 +54,7 @@ FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& v
       r[axis_index] = 0.0;
       moments += volume[p] * r * r.transpose();
     }
-  if (w.n_points < 3)
+  if (w.n_points < 3 || g.rings_about_path)
     return w;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(moments);
   // Eigenvalues ascending: [0] ~ 0 along the face normal, [1] minor, [2] major.

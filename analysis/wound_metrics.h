@@ -51,6 +51,9 @@ struct WoundGeometry
   /// 0: one cell.
   double face_layer = 0.0;
   bool projectile_exited = true; ///< whether an exit wound is measured
+  /// The points are rings about the path (an axisymmetric scene): a face wound is round, its
+  /// aspect ratio 1 and it has no major axis.
+  bool rings_about_path = false;
 };
 
 struct WoundMetrics

@@ -160,6 +160,7 @@ WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solv
   geometry.path_origin = sample.projectile_origin;
   geometry.path_direction = solver.flight_direction();
   geometry.cell_size = solver.scene().cell_size;
+  geometry.rings_about_path = solver.scene().axisymmetric;
   geometry.face_layer = face_layer_in_rows(sample, geometry.cell_size, face_layer);
   // A scene without a projectile (a wave test) measures along the flight axis through its
   // middle; an exit wound needs a projectile that left.

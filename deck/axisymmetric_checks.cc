@@ -134,7 +134,7 @@ void check_body(const mpm::SceneParameters& s, const mpm::BodyParameters& body, 
             "fibres along " + text(fibers.direction) +
               " are not symmetric about the axis (material '" + body.material +
               "' is anisotropic); only fibres along y are",
-            "use Fiber direction = 0, 1, 0, an isotropic material, or Grid/Dimension = 3");
+            "use Fiber field/Direction = 0, 1, 0, an isotropic material, or Grid/Dimension = 3");
 }
 } // namespace
 

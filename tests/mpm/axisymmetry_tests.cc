@@ -300,3 +300,46 @@ TEST(Axisymmetry, ASolidCylinderRingsAtItsClosedFormRadialFrequencyToSecondOrder
   std::cout << "radial mode x = " << x << ", period errors: " << errors[0] << ", " << errors[1]
             << ", " << errors[2] << "\n";
 }
+
+namespace
+{
+/// A rigid steel ball (radius 2.5 mm) at 50 m/s along y into a gel cylinder (radius 8 mm,
+/// 10 mm long) on the axis, 1 mm cells, 2 points per cell axis, free faces; 3D or axisymmetric.
+mpm::SceneParameters ball_into_gel_cylinder(const bool axisymmetric)
+{
+  mpm::SceneParameters scene =
+    test::empty_scene(Vector3(-10e-3, -6e-3, -10e-3), Vector3(10e-3, 12e-3, 10e-3), 1e-3);
+  scene.axisymmetric = axisymmetric;
+  scene.materials.push_back(test::elastic_material("gel", 2e7, 1e5));
+  scene.materials.push_back(test::rigid_material("steel"));
+  scene.bodies.push_back(cylinder_body("gel", "gel", 0.0, 8e-3, 10e-3, 2));
+  mpm::BodyParameters ball = test::sphere_body("ball", "steel", Vector3(0, -2.6e-3, 0), 2.5e-3, 7800.0, 2);
+  ball.initial_velocity = Vector3(0, 50, 0);
+  ball.is_projectile = true;
+  scene.bodies.push_back(ball);
+  scene.contact.friction_coefficient = 0.0;
+  scene.contact.exact_rigid_surface = true;
+  scene.end_time = 1.5e-4;
+  return scene;
+}
+} // namespace
+
+TEST(Axisymmetry, ABallIntoAGelCylinderSlowsAsInThreeDimensions)
+{
+  double velocity[2], travel[2];
+  for (const bool axisymmetric : {false, true})
+  {
+    mpm::Solver solver(ball_into_gel_cylinder(axisymmetric));
+    const double y0 = solver.diagnostics().bodies[1].centroid[1];
+    while (!solver.finished())
+      solver.advance();
+    const SceneDiagnostics d = solver.diagnostics();
+    velocity[axisymmetric] = d.bodies[1].velocity[1];
+    travel[axisymmetric] = d.bodies[1].centroid[1] - y0;
+  }
+  // The ball loses about 7 of its 50 m/s; the two runs agree on that loss within 5 % (measured:
+  // 6.89 and 6.77 m/s) and on the travel within 1 % (6.96 and 6.98 mm).
+  EXPECT_LT(velocity[0], 45.0);
+  EXPECT_NEAR((50.0 - velocity[1]) / (50.0 - velocity[0]), 1.0, 0.05);
+  EXPECT_NEAR(travel[1] / travel[0], 1.0, 0.01);
+}
