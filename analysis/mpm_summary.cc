@@ -99,7 +99,8 @@ nlohmann::json penetration_json(const mpm::ProjectilePenetration& p)
 double accounted_energy(const mpm::Solver& solver, const mpm::SceneDiagnostics& d)
 {
   return d.kinetic_energy + d.strain_energy + d.potential_energy + d.dissipated_energy +
-         solver.contact_dissipation() + solver.support_dissipation() + solver.removed_energy();
+         solver.contact_dissipation() + solver.support_dissipation() + solver.removed_energy() -
+         solver.prescribed_work();
 }
 
 MomentumAudit mpm_momentum_audit(const mpm::Solver& solver, const mpm::SceneDiagnostics& d,
@@ -228,6 +229,7 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
                  {"dissipated_contact_J", solver.contact_dissipation()},
                  {"dissipated_supports_J", solver.support_dissipation()},
                  {"outflow_J", solver.removed_energy()},
+                 {"work_prescribed_J", solver.prescribed_work()},
                  {"balance_error", relative_balance_error(accounted_energy(solver, d), initial)}};
   j["removed_points"] = solver.removed_points();
   j["momentum_audit"] = momentum_audit_json(mpm_momentum_audit(solver, d, supports));

@@ -29,7 +29,8 @@ struct RunTotals
 };
 
 /// Total energy accounted for (J): kinetic + strain + potential + dissipated in the materials,
-/// by contact and carried out of the grid by removed points.
+/// by contact and by the supports, and carried out of the grid by removed points, less the work
+/// rigid bodies of prescribed motion did on the others.
 double accounted_energy(const mpm::Solver& solver, const mpm::SceneDiagnostics& d);
 
 /// (energy - initial) / initial, 0 for a scene that starts without energy: the energy

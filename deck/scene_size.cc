@@ -1,6 +1,7 @@
 // Size of an MPM scene before it is built.
 #include "deck/scene_size.h"
 
+#include "mpm/axisymmetry.h"
 #include "mpm/body_builder.h"
 #include "mpm/grid.h"
 
@@ -10,8 +11,10 @@
 
 namespace vulnus::deck
 {
-SceneSize estimate_scene_size(const mpm::SceneParameters& scene)
+SceneSize estimate_scene_size(const mpm::SceneParameters& deck)
 {
+  // An axisymmetric scene is its r-y plane, one cell thick.
+  const mpm::SceneParameters scene = deck.axisymmetric ? mpm::plane_of_revolution(deck) : deck;
   SceneSize size;
   const double h = scene.cell_size;
   size.box_nodes = 1.0;
@@ -25,7 +28,10 @@ SceneSize estimate_scene_size(const mpm::SceneParameters& scene)
     const mpm::Vector3 extent =
       (upper.cwiseMin(scene.domain_max) - lower.cwiseMax(scene.domain_min)).cwiseMax(0.0);
     const double per_axis = body.particles_per_cell;
-    size.points += extent.prod() / (h * h * h) * per_axis * per_axis * per_axis;
+    if (scene.axisymmetric)
+      size.points += extent[0] * extent[1] / (h * h) * per_axis * per_axis;
+    else
+      size.points += extent.prod() / (h * h * h) * per_axis * per_axis * per_axis;
   }
   size.bytes = size.points * resident_bytes_per_point + size.box_nodes * sizeof(std::int32_t);
   return size;

@@ -462,7 +462,10 @@ void Solver::advance(const double cap)
     if (!grid_settings.body_is_rigid[b] || static_cast<int>(b) == held)
       accumulated_external_impulse += dt * body_mass[b] * parameters.gravity;
     else if (parameters.bodies[b].rigid_motion != RigidMotion::free)
+    {
       accumulated_external_impulse -= dt * grid_result.contact_force[b];
+      accumulated_prescribed_work -= dt * grid_result.contact_force[b].dot(grid_settings.rigid_velocity[b]);
+    }
   }
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
     if (grid_settings.body_is_rigid[b] && parameters.bodies[b].rigid_motion == RigidMotion::free)

@@ -196,6 +196,9 @@ public:
   /// deformable bodies, and what holds a rigid body of prescribed motion on its course
   /// (minus the contact impulse it received).
   const Vector3& external_impulse() const { return accumulated_external_impulse; }
+  /// Work the rigid bodies of prescribed motion did on the others since the start (J): the
+  /// energy their drive supplied (the body itself keeps its kinetic energy).
+  double prescribed_work() const { return accumulated_prescribed_work; }
   /// Momentum brought in by points added to the bodies (add_points), kg m/s.
   const Vector3& added_momentum() const { return accumulated_added_momentum; }
   /// Number of nodes where bodies met in the last step.
@@ -359,6 +362,7 @@ private:
   double energy_at_start = 0.0;
   Vector3 momentum_at_start = Vector3::Zero();
   Vector3 accumulated_external_impulse = Vector3::Zero(); ///< same on every rank
+  double accumulated_prescribed_work = 0.0;               ///< same on every rank
   Vector3 accumulated_added_momentum = Vector3::Zero();   ///< same on every rank
   PhaseTimes timings;
   std::size_t n_removed = 0;

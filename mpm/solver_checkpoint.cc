@@ -14,7 +14,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'C', '9'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'D', '0'};
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -39,6 +39,7 @@ void Solver::save(std::ostream& out) const
   put(out, energy_at_start);
   put(out, momentum_at_start);
   put(out, accumulated_external_impulse);
+  put(out, accumulated_prescribed_work);
   put(out, accumulated_added_momentum);
   put(out, static_cast<std::uint64_t>(n_removed));
   put(out, outflow_energy);
@@ -105,6 +106,8 @@ void Solver::restore(std::istream& in)
   Vector3 momentum_start, external, added;
   get(in, momentum_start);
   get(in, external);
+  double prescribed_work = 0.0;
+  get(in, prescribed_work);
   get(in, added);
   get(in, removed);
   get(in, outflow);
@@ -186,6 +189,7 @@ void Solver::restore(std::istream& in)
   energy_at_start = energy;
   momentum_at_start = momentum_start;
   accumulated_external_impulse = external;
+  accumulated_prescribed_work = prescribed_work;
   accumulated_added_momentum = added;
   n_removed = removed;
   outflow_energy = outflow;

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <random>
+#include <sstream>
 
 using namespace vulnus;
 using namespace vulnus::mpm;
@@ -342,4 +343,25 @@ TEST(Axisymmetry, ABallIntoAGelCylinderSlowsAsInThreeDimensions)
   EXPECT_LT(velocity[0], 45.0);
   EXPECT_NEAR((50.0 - velocity[1]) / (50.0 - velocity[0]), 1.0, 0.05);
   EXPECT_NEAR(travel[1] / travel[0], 1.0, 0.01);
+}
+
+TEST(Axisymmetry, ARestoredRunContinuesBitForBit)
+{
+  mpm::SceneParameters scene = ball_into_gel_cylinder(true);
+  scene.end_time = 6e-5;
+  mpm::Solver first(scene);
+  for (int k = 0; k < 10; ++k)
+    first.advance();
+  std::stringstream checkpoint;
+  first.save(checkpoint);
+  mpm::Solver second(scene);
+  second.restore(checkpoint);
+  while (!first.finished())
+    first.advance();
+  while (!second.finished())
+    second.advance();
+  ASSERT_EQ(first.points().size(), second.points().size());
+  for (std::size_t p = 0; p < first.points().size(); ++p)
+    ASSERT_EQ(first.points().position[p], second.points().position[p]) << p;
+  EXPECT_EQ(first.diagnostics().momentum, second.diagnostics().momentum);
 }
