@@ -1,4 +1,4 @@
-// Cross-entry checks of a deck (issue 9 grows this list).
+// Cross-entry checks of a deck.
 #include "deck/deck_checks.h"
 
 #include "io/mpi_launch.h"

@@ -197,7 +197,7 @@ void report_machine_ceiling()
               arithmetic_one / arithmetic_two);
 }
 
-/// What each skip saves, measured on variants of the scene (issue 8).
+/// What each skip saves, measured on variants of the scene.
 void report_skips(const mpm::SceneParameters& scene, const Measurement& base,
                   const std::size_t warmup, const std::size_t steps)
 {

@@ -104,8 +104,8 @@ TEST(Decomposition, RefusesAZoneOffTheGridNodes)
   const std::string text =
     all_problems(s, zone({0.0045, 0.004, 0.004}, {0.008, 0.008, 0.008}, CouplingScheme::same_step));
   EXPECT_NE(text.find("x = 0.0045 m is not on a grid node"), std::string::npos) << text;
-  // The node suggested lies outwards, so the zone does not shrink (issue 25: an inward
-  // suggestion was then refused as too small for the projectile).
+  // The node suggested lies outwards, so the zone does not shrink (an inward suggestion
+  // could be refused as too small for the projectile).
   EXPECT_NE(text.find("move it to 0.004 m"), std::string::npos) << text;
   const std::string upper =
     all_problems(s, zone({0.004, 0.004, 0.004}, {0.0075, 0.008, 0.008}, CouplingScheme::same_step));

@@ -100,7 +100,7 @@ TEST_P(HybridWave, CrossesTheInterfaceWithLittleReflection)
 }
 
 // The adaptive zone converts the cells holding half of the pulse while it passes: the same
-// bounds as without the conversion (the far-field issue's wave test).
+// bounds as without the conversion (the far field's plane-wave test above).
 TEST_P(HybridWave, ConversionMidPassageReflectsNoMore)
 {
   const WaveCase w = GetParam();
@@ -114,7 +114,7 @@ TEST_P(HybridWave, ConversionMidPassageReflectsNoMore)
 }
 
 // Implicit (Newmark) far fields in balanced windows of 10 MPM steps and of 50 at a fifth of
-// the MPM step: both windows last 0.8 of a wave's transit of the interface cell. The issue's
+// the MPM step: both windows last 0.8 of a wave's transit of the interface cell. The
 // bounds: reflection and interface energy error below 1 % (measured 1.5e-5 / 1.3e-5 and
 // 3.3e-4), momentum exchanged to round-off.
 INSTANTIATE_TEST_SUITE_P(

@@ -230,7 +230,7 @@ TEST(MpmContact, ExactRigidSurfaceConservesMomentumAndBitesLess)
 }
 
 // Two rigid bodies cannot give way to each other: their meeting stops the run naming both,
-// instead of letting them pass through (issue 25: a rigid bullet ended inside a rigid wall).
+// instead of letting them pass through (a rigid bullet would end inside a rigid wall).
 TEST(MpmContact, TwoRigidBodiesMeetingStopTheRun)
 {
   mpm::SceneParameters scene = test::rigid_ball_into_gel_slab();

@@ -335,7 +335,7 @@ TEST(MpmVerification, AFailedMaterialUpdateNamesThePointThatFailed)
 }
 
 // Rigid bodies do not obey face conditions: one reaching a fixed face stops the run naming
-// the body and the face, instead of passing through it (issue 25's oblique impact).
+// the body and the face, instead of passing through it (as in an oblique impact).
 TEST(MpmVerification, ARigidBodyReachingAFixedFaceStopsTheRun)
 {
   mpm::SceneParameters scene = test::empty_scene(Vector3::Zero(), Vector3(12e-3, 8e-3, 8e-3), 1e-3);

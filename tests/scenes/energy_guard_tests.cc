@@ -1,8 +1,8 @@
 // The energy guard: a run whose energy balance breaks warns at the step it was first seen
 // (with the likely causes), or stops as a blow-up past the limit with its records kept; a
-// sound run says nothing. The broken scene is one of issue 25's: an elastic-plastic bullet
-// into a prescribed rigid slab. It gained 32 % of its energy when the issue was filed; with
-// the shock viscosity and the projectile's relaxation it gains 7.7 % by 120 microseconds
+// sound run says nothing. The broken scene: an elastic-plastic bullet into a
+// prescribed rigid slab. Without the shock viscosity and the projectile's relaxation it gains
+// 32 % of its energy; with them it gains 7.7 % by 120 microseconds
 // (5 % at step 140) at CFL 0.4 when the bullet steps with the scene, so the tests run at that
 // step without subcycling and set bounds below that. (Subcycled, the same scene closes its
 // balance to 1e-4: the contact's work on the bullet is booked over its substeps.) A restart
@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 const std::string paper_deck = "run '" + source_dir() + "/inputs/paper/anisotropic_150ms_coarse.prm' ";
 
 /// The bullet driven into a wall that cannot move or deform: the balance error grows to 0.022 in
-/// the impact's first 14 us and ends at 0.032 (0.077 with the contact's booking before stop 61).
+/// the impact's first 14 us and ends at 0.032 (0.077 with the contact's correction booked at the trial velocities).
 /// The wall and grid are cut to +-10 / +-12 mm across the flight (4 thousand wall points instead
 /// of 25 thousand): the prescribed wall acts only where the bullet (radius 4.5 mm, mushrooming
 /// to about 7) touches it. [TO CHECK when first run: the two figures above on this wall.]

@@ -1,6 +1,6 @@
 // The hybrid paper deck against its pure-MPM reference, through `vulnus run`: the coarse
 // anisotropic 150 m/s scene with a rigid bullet (the elastic-plastic bullet gives the same
-// comparison at ten times the cost; see the coupling issue's note), and a pure-FE deck.
+// comparison at ten times the cost), and a pure-FE deck.
 #include "../app/command_runner.h"
 
 #include <nlohmann/json.hpp>

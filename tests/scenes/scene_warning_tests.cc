@@ -1,5 +1,5 @@
 // Warnings before the first step about scenes that run but may mislead: a target narrower
-// than the projectile across its path (issue 25: a 4 mm slab against a 9 mm bullet reported
+// than the projectile across its path (a 4 mm slab against a 9 mm bullet would report
 // an "exit" with the plug still on the nose), nearly incompressible tissue whose points keep
 // their own volume (they lock), an exact rigid surface a held projectile loses, and a supported
 // domain face that no body reaches.
@@ -52,7 +52,7 @@ TEST(SceneWarnings, ATargetNarrowerThanTheProjectileIsFlagged)
 }
 
 // A bullet flying partly out through a free domain face loses points to the grid's edge:
-// the run says that what it reports of the bullet is only what stayed (issue 25, item 2).
+// the run says that what it reports of the bullet is only what stayed.
 TEST(SceneWarnings, AProjectileLeavingTheGridInPartIsFlagged)
 {
   ScratchDirectory scratch("scene_warning_partly_departed");
