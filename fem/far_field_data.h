@@ -306,6 +306,7 @@ double failure_proximity(const materials::FailureParameters& criterion, const Ei
 /// the current set of converted cells.
 void build_boundaries_and_mass(FarFieldSolver::Data& d);
 
-/// Throws std::runtime_error with `message` on every rank if `failed` is true on any rank.
+/// Collective: if `failed` is true on any rank, throws std::runtime_error on every rank with the
+/// first failing rank's message (prefixed with that rank on the others).
 void throw_if_any(bool failed, const std::string& message, MPI_Comm comm);
 } // namespace vulnus::fem

@@ -28,9 +28,23 @@ using namespace dealii;
 
 void throw_if_any(const bool failed, const std::string& message, const MPI_Comm comm)
 {
-  const bool any = Utilities::MPI::max(failed ? 1 : 0, comm) > 0;
-  if (any)
-    throw std::runtime_error(failed ? message : "FE: failure on another MPI rank: " + message);
+  if (Utilities::MPI::max(failed ? 1 : 0, comm) == 0)
+    return;
+  // Every rank throws the first failing rank's own words: a rank whose cells were fine has no
+  // message of its own to give.
+  const std::vector<std::string> messages =
+    Utilities::MPI::all_gather(comm, failed ? "1" + message : std::string("0"));
+  for (std::size_t rank = 0; rank < messages.size(); ++rank)
+  {
+    if (messages[rank][0] != '1')
+      continue;
+    std::string what = messages[rank].substr(1);
+    if (what.empty())
+      what = "a far-field failure that gave no message";
+    if (!failed)
+      what = "on MPI rank " + std::to_string(rank) + ": " + what;
+    throw std::runtime_error(what);
+  }
 }
 
 FarFieldSolver::Data::Data(const FeSceneParameters& parameters, const MPI_Comm communicator)

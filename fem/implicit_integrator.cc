@@ -26,6 +26,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <limits>
 #include <memory>
@@ -412,9 +413,22 @@ std::string apply_newton_correction(FarFieldSolver::Data& d, ImplicitData& im, c
       solver.solve(im.matrix, im.increment, im.rhs, im.preconditioner);
     }
   }
-  catch (const std::exception& e)
+  catch (const ExceptionBase& e)
   {
     im.preconditioner_dt = 0.0; // a fresh hierarchy for the retry
+    // deal.II's own words without its source location and stack trace.
+    std::ostringstream info;
+    e.print_info(info);
+    std::string words = info.str();
+    while (!words.empty() && std::isspace(static_cast<unsigned char>(words.back())))
+      words.pop_back();
+    const std::size_t first = words.find_first_not_of(" \n");
+    return "linear solver: " + (first == std::string::npos ? std::string(e.what())
+                                                            : words.substr(first));
+  }
+  catch (const std::exception& e)
+  {
+    im.preconditioner_dt = 0.0;
     return std::string("linear solver: ") + e.what();
   }
   const auto t2 = std::chrono::steady_clock::now();
@@ -520,6 +534,9 @@ void FarFieldSolver::advance_implicit(const double dt)
   bool converged = false;
   EvaluationSums sums;
   std::string failure;
+  // Where a failed step stopped: its cells' evaluation or a linear solve, at this iteration.
+  enum class Stage { newton, cells, linear_solve } failed_in = Stage::newton;
+  unsigned int failed_iteration = 0;
   for (unsigned int it = 0; it <= d.prm.max_newton_iterations; ++it)
   {
     update_acceleration();
@@ -538,6 +555,8 @@ void FarFieldSolver::advance_implicit(const double dt)
     catch (const std::runtime_error& e)
     {
       failure = e.what();
+      failed_in = Stage::cells;
+      failed_iteration = it;
       break;
     }
     stats.assembly_seconds +=
@@ -574,7 +593,11 @@ void FarFieldSolver::advance_implicit(const double dt)
     failure = apply_newton_correction(d, im, dt, residual, lift_pending, stats);
     lift_pending = false;
     if (!failure.empty())
+    {
+      failed_in = Stage::linear_solve;
+      failed_iteration = it;
       break;
+    }
     last_correction = im.increment.l2_norm();
     TrilinosWrappers::MPI::Vector step(d.displacement);
     step -= im.u_old;
@@ -588,10 +611,30 @@ void FarFieldSolver::advance_implicit(const double dt)
     d.velocity = im.v_old;
     d.acceleration = im.a_old;
     std::ostringstream message;
-    message << "FE implicit step at t = " << d.time << " s, dt = " << dt
-            << " s did not converge after " << stats.newton_iterations
-            << " Newton iterations (residual " << stats.final_residual << " N, first "
-            << first_residual << " N)";
+    message << "FE implicit step at t = " << d.time << " s, dt = " << dt << " s: ";
+    // The residuals, once the step has one (a failure in the first evaluation of the cells, at
+    // the predictor, comes before any).
+    std::ostringstream residuals;
+    residuals << " (last residual " << stats.final_residual << " N, first " << first_residual
+              << " N)";
+    switch (failed_in)
+    {
+    case Stage::cells:
+      if (failed_iteration == 0)
+        message << "the cells could not be evaluated at the step's predicted state";
+      else
+        message << "the cells could not be evaluated after Newton correction "
+                << failed_iteration << residuals.str();
+      break;
+    case Stage::linear_solve:
+      message << "the linear solve of Newton correction " << failed_iteration + 1
+              << " failed" << residuals.str();
+      break;
+    case Stage::newton:
+      message << "Newton did not converge in " << stats.newton_iterations << " iterations"
+              << residuals.str();
+      break;
+    }
     if (!failure.empty())
       message << ": " << failure;
     message << "; reduce the time step";

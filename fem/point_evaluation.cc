@@ -328,10 +328,18 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
     std::chrono::duration<double>(std::chrono::steady_clock::now() - assembly_start).count();
   if (Utilities::MPI::max(unexpected ? 1 : 0, comm) == 0)
     throw_if_any(inverted, message, comm);
-  else if (unexpected)
-    std::rethrow_exception(unexpected);
   else
-    throw std::runtime_error("FE: failure on another MPI rank");
+    try
+    {
+      // The other ranks learn what failed here; this rank keeps its own exception.
+      throw_if_any(unexpected != nullptr || inverted, message, comm);
+    }
+    catch (const std::runtime_error&)
+    {
+      if (unexpected)
+        std::rethrow_exception(unexpected);
+      throw;
+    }
   return sums;
 }
 

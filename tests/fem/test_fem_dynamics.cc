@@ -425,6 +425,35 @@ TEST(Newton, AcceptsStepsWhoseStrainsAreAtRoundOff)
   EXPECT_LT(kinetic[1], 0.05 * e0);
   EXPECT_GT(kinetic[3], 0.95 * e0);
 }
+
+/// A step whose predicted state already inverts a cell (the bar's end pushed 1.5 cells in one
+/// short step) fails before Newton has a residual: the message must say so, not report "0
+/// Newton iterations (residual 0 N, first 0 N)".
+TEST(Newton, AStepFailingAtItsPredictorSaysSo)
+{
+  FeSceneParameters p = bar(bar_length, 10);
+  p.integrator = TimeIntegrator::newmark;
+  p.faces[0].condition = FaceParameters::Condition::velocity;
+  p.faces[0].value = {{300.0, 0.0, 0.0}};
+  p.time_step = 1e-4; // below two wave transits of a cell: the step extrapolates its predictor
+  FarFieldSolver solver(p, MPI_COMM_SELF);
+  solver.setup();
+  std::string what;
+  try
+  {
+    solver.advance(p.time_step);
+  }
+  catch (const std::runtime_error& e)
+  {
+    what = e.what();
+  }
+  EXPECT_NE(what.find("the cells could not be evaluated at the step's predicted state"),
+            std::string::npos)
+    << what;
+  EXPECT_NE(what.find("inverted"), std::string::npos) << what;
+  EXPECT_EQ(what.find("0 Newton iterations"), std::string::npos) << what;
+  EXPECT_EQ(what.find("residual 0 N"), std::string::npos) << what;
+}
 } // namespace
 
 namespace

@@ -2,6 +2,7 @@
 // MPI_COMM_WORLD and on MPI_COMM_SELF of every rank: the results must agree to solver
 // tolerance (run under `mpirun -np 2`; with one rank it compares two serial runs). Also a
 // traction-loaded slab stepped to its end time with HDF5/XDMF output.
+#include "fem/far_field_data.h"
 #include "fem/far_field_solver.h"
 #include "fem_test_scenes.h"
 
@@ -14,6 +15,8 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace
 {
@@ -206,5 +209,36 @@ TEST(FeMeshOutput, GathersEveryNodeOnceWithItsDisplacement)
         cross_product_3d(corner[1] - corner[0], corner[3] - corner[0]) * (corner[4] - corner[0]);
     EXPECT_GT(volume, 0.0) << "cell " << k;
   }
+}
+
+// A far-field failure found on one rank reaches every rank in that rank's words: the others,
+// whose cells were fine, have none of their own to give (they used to report "failure on
+// another MPI rank: " and nothing after it).
+TEST(FeFailure, EveryRankReportsTheFailingRanksMessage)
+{
+  const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  for (const std::string& words : {std::string("FE: an inverted cell"), std::string()})
+  {
+    std::string what;
+    try
+    {
+      throw_if_any(rank == 0, words, MPI_COMM_WORLD);
+    }
+    catch (const std::runtime_error& e)
+    {
+      what = e.what();
+    }
+    ASSERT_FALSE(what.empty()) << "rank " << rank << " did not throw, or threw no words";
+    if (!words.empty())
+    {
+      EXPECT_NE(what.find(words), std::string::npos) << what;
+    }
+    if (rank != 0)
+    {
+      EXPECT_NE(what.find("on MPI rank 0"), std::string::npos) << what;
+    }
+  }
+  // Nobody failed: nobody throws.
+  EXPECT_NO_THROW(throw_if_any(false, "", MPI_COMM_WORLD));
 }
 } // namespace
