@@ -10,7 +10,6 @@
 #include <stdexcept>
 #include <unordered_map>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace vulnus::coupling
@@ -128,17 +127,10 @@ void HybridSolver::build_balance_matrix(const double window)
   const std::vector<mpm::Vector3>& free = free_components;
   const double factor = fe_solver->interface_mass_factor(window);
 
-  // Probing holds while the far field's answer to a window's displacement decays within
-  // probe_reach nodes: windows of about a wave transit of a cell, to which balanced windows are
-  // kept. A longer (dashpot) window's answer reaches about as many cells as the window lasts
-  // transits, so a probe's columns would hold its neighbours' answers and miss their own far
-  // part; its columns are taken one by one.
-  const bool exact = n <= exact_balance_limit || window > probed_window_transits *
-                                                             fe_solver->shortest_wave_transit();
   fe_solver->prepare_interface_stiffness(window);
   std::vector<Eigen::Triplet<double>> entries;
   std::vector<double> response(n);
-  if (exact)
+  if (n <= exact_balance_limit)
   {
     for (std::size_t j = 0; j < n; ++j)
     {
@@ -263,80 +255,29 @@ void HybridSolver::chord_iterate(const double window,
                                  const double tolerance,
                                  const std::function<double(Eigen::VectorXd&)>& residual)
 {
-  // The chord's matrix is the far field's effective interface mass at the window's start. Where
-  // the far field's step answers otherwise (large strain over a long window), a full chord step
-  // can overshoot and the iteration diverge: the interface was then driven ever harder and the
-  // far field kept the last, worst guess (a window of 15 wave transits of a gelatin block ended
-  // with 5.6 times the interface's momentum scale left and the far field given 4.5 times the
-  // work the MPM side did). So a step that does not lower the residual is halved from the best
-  // guess, and the far field ends at the best guess it was stepped with.
   const std::vector<mpm::Vector3>& free = free_components;
-  Eigen::VectorXd g, best_g;
-  double best = residual(best_g);
-  std::vector<mpm::Vector3> best_velocity = velocity_end, best_impulse = fe_window_impulse;
-  std::string best_state; // the far field after the best step
-  bool at_best = true;
-  double share = 1.0;
+  Eigen::VectorXd g;
+  double largest = residual(g);
   unsigned int iteration = 0;
-  for (; best > tolerance && iteration < max_balance_iterations; ++iteration)
+  for (; largest > tolerance && iteration < max_balance_iterations; ++iteration)
   {
-    const Eigen::VectorXd dv = solver.solve(best_g);
+    const Eigen::VectorXd dv = solver.solve(g);
     for (std::size_t k = 0; k < keys.size(); ++k)
-      velocity_end[k] =
-        best_velocity[k] -
-        share * dv.segment<3>(3 * static_cast<Eigen::Index>(k)).cwiseProduct(free[k]);
-    if (at_best)
-    {
-      // This step may be worse: keep the far field's state at the best guess.
-      std::ostringstream state;
-      fe_solver->save(state);
-      best_state = state.str();
-    }
+      velocity_end[k] -= dv.segment<3>(3 * static_cast<Eigen::Index>(k)).cwiseProduct(free[k]);
     std::istringstream state(fe_state_at_window_start);
     fe_solver->restore(state);
-    // A guess the far field's step cannot take (its Newton fails: cells crushed by an
-    // overshooting interface) is a step too far as well.
-    double largest = std::numeric_limits<double>::infinity();
-    try
-    {
-      fe_window_impulse = step_fe(window);
-      largest = residual(g);
-    }
-    catch (const std::runtime_error&)
-    {
-      ++book.balance_failed_resteps;
-    }
-    if (largest < best)
-    {
-      best = largest;
-      best_g = g;
-      best_velocity = velocity_end;
-      best_impulse = fe_window_impulse;
-      at_best = true;
-      share = 1.0;
-    }
-    else
-    {
-      at_best = false;
-      share *= 0.5;
-    }
-  }
-  if (!at_best)
-  {
-    velocity_end = best_velocity;
-    fe_window_impulse = best_impulse;
-    std::istringstream state(best_state);
-    fe_solver->restore(state);
+    fe_window_impulse = step_fe(window);
+    largest = residual(g);
   }
   book.balance_solves += iteration;
-  if (best <= tolerance)
+  if (largest <= tolerance)
     return;
   ++book.balance_unconverged_windows;
   // Relative to the interface's momentum scale, or (an interface still at rest) to the scale
   // whose share the tolerance's floor is.
   book.largest_balance_residual =
       std::max(book.largest_balance_residual,
-               best / std::max(balance_scale, tolerance / balance_tolerance));
+               largest / std::max(balance_scale, tolerance / balance_tolerance));
 }
 
 void HybridSolver::balance_window(const double window, const double dt,

@@ -58,8 +58,6 @@ void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
   const double ratio = window / dt;
   if (first_substep)
   {
-    book.mpm_work_at_window_start = book.mpm_work;
-    book.fe_work_at_window_start = book.fe_work;
     open_implicit_window(window, mpm_side);
     // The dashpot must be no softer than the far field over this window: a matrix built for a
     // longer window (a larger effective mass) is rebuilt, one for a somewhat shorter is kept.
@@ -143,15 +141,6 @@ void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
     step_fe_to_impulse(window, target);
     book_fe_side(fe_window_impulse);
     fe_state_at_window_start.clear();
-    // The window dissipates only if the far field answered its impulse as the dashpot's
-    // effective mass said; where it did not (it created energy), later windows are halved.
-    const double given = book.mpm_work - book.mpm_work_at_window_start;
-    const double received = book.fe_work - book.fe_work_at_window_start;
-    if (received - given > 1e-3 * std::max(std::abs(given), std::abs(received)))
-    {
-      ++book.windows_creating_energy;
-      book.dashpot_window_limit = 0.5 * window;
-    }
   }
 }
 } // namespace vulnus::coupling

@@ -166,9 +166,6 @@ void HybridSolver::advance()
         if (book.shortest_window_limit == 0.0 || limit < book.shortest_window_limit)
           book.shortest_window_limit = limit;
       }
-    // Dashpot windows after one that created energy (coupling/dashpot_windows.cc).
-    if (dashpot_windows() && book.dashpot_window_limit > 0.0)
-      window = std::min(window, book.dashpot_window_limit);
     // The adaptive zone looks at the far field at window ends: no window may outlast a check.
     if (adaptive.enabled)
       window = std::min(window, adaptive.check_interval * mpm_solver->stable_time_step());

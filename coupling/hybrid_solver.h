@@ -114,8 +114,7 @@ public:
   }
   /// Up to this many interface dofs (default 750) the far field's effective interface mass
   /// takes one far-field solve per dof (exact); beyond, it is probed (3 x 5^3 = 375 solves,
-  /// entries within 2 grid nodes of their dof kept) for windows up to probed_window_transits
-  /// wave transits of the far field's smallest cell, and exact for longer ones.
+  /// entries within 2 grid nodes of their dof kept).
   std::size_t exact_balance_dofs() const { return exact_balance_limit; }
   void set_exact_balance_dofs(const std::size_t n) { exact_balance_limit = n; }
   /// The effective interface mass of the current window length, 3 per key, kg.
@@ -124,10 +123,6 @@ public:
   /// response within 2 nodes of a probed dof is that dof's alone.
   static constexpr int probe_period = 5;
   static constexpr int probe_reach = 2;
-  /// Longest window, in wave transits of the far field's smallest cell, whose effective mass
-  /// is probed: beyond, the far field's answer reaches past probe_reach (a dashpot window of
-  /// 15 transits with a probed matrix drove the balance's chord iteration away from the answer).
-  static constexpr double probed_window_transits = 1.25;
   static_assert(probe_period == 2 * probe_reach + 1);
 
   // --- adaptive zone (coupling/adaptive_zone.cc) -----------------------------------------

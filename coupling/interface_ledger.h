@@ -27,8 +27,6 @@ struct InterfaceLedger
   /// taken back in the next window) and the largest residual left, relative to the
   /// interface's momentum scale; the effective-mass matrices built and their wall time.
   unsigned long balance_solves = 0;
-  /// Re-steps whose far-field Newton failed (the guess was abandoned for a shorter one).
-  unsigned long balance_failed_resteps = 0;
   unsigned long balance_unconverged_windows = 0;
   double largest_balance_residual = 0.0;
   unsigned long balance_matrices = 0;
@@ -37,12 +35,6 @@ struct InterfaceLedger
   /// deck asked for longer ones), and the shortest such limit met, s.
   unsigned long windows_shortened = 0;
   double shortest_window_limit = 0.0;
-  /// Dashpot windows whose far field received more work than the MPM side gave (beyond 1e-3
-  /// of the larger), and the length the later windows are cut to after the last of them (half
-  /// of it; 0: none), s. The works booked when the open window started, J.
-  unsigned long windows_creating_energy = 0;
-  double dashpot_window_limit = 0.0;
-  double mpm_work_at_window_start = 0.0, fe_work_at_window_start = 0.0;
   unsigned long mpm_steps = 0;
 
   /// Work done by MPM minus work received by FE (the interface energy error), J.

@@ -79,9 +79,7 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
       o << "at most " << 3 * coupling::HybridSolver::probe_period *
                              coupling::HybridSolver::probe_period *
                              coupling::HybridSolver::probe_period
-        << " probing far-field solves per window length for its " << n_dofs
-        << " dofs, one per dof for windows beyond "
-        << coupling::HybridSolver::probed_window_transits << " wave transits of a cell)";
+        << " probing far-field solves per window length for its " << n_dofs << " dofs)";
     if (solver.dashpot_windows())
       o << ", windows of any length (a wave transit of the far field's smallest cell is "
         << solver.fe().shortest_wave_transit() << " s now)";
@@ -217,16 +215,6 @@ std::vector<std::string> HybridStepper::final_warnings() const
       << "shorten the windows (Hybrid/Substeps) or use Far field/Integrator = central difference";
     warnings.push_back(o.str());
   }
-  if (const unsigned long windows = solver.ledger().windows_creating_energy; windows > 0)
-  {
-    std::ostringstream o;
-    o << "*** " << windows << " dashpot window(s) gave the far field more work than the MPM "
-      << "side did (its step answered the window's impulse otherwise than its effective mass "
-      << "at the window's start said: large strain over the window); the windows after each "
-      << "were halved, to " << solver.ledger().dashpot_window_limit << " s at the end; "
-      << "shorter windows from the start (Hybrid/Substeps, Far field/Time step) avoid it";
-    warnings.push_back(o.str());
-  }
   // The interface may lose energy (windows dissipate what varies within them) but not make it.
   if (const double created = -solver.ledger().energy_error(); created > 0.01 * std::abs(initial_energy))
   {
@@ -343,16 +331,12 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
   }
   if (solver.balances_windows())
     summary["hybrid"]["balance"] = {{"far_field_re_steps", ledger.balance_solves},
-                                    {"far_field_re_steps_failed", ledger.balance_failed_resteps},
                                     {"unconverged_windows", ledger.balance_unconverged_windows},
                                     {"largest_residual_left", ledger.largest_balance_residual},
                                     {"effective_mass_matrices", ledger.balance_matrices},
                                     {"effective_mass_seconds", ledger.balance_matrix_seconds},
                                     {"windows_shortened_to_one_transit", ledger.windows_shortened},
-                                    {"shortest_window_limit_s", ledger.shortest_window_limit},
-                                    {"dashpot_windows_creating_energy",
-                                     ledger.windows_creating_energy},
-                                    {"dashpot_window_limit_s", ledger.dashpot_window_limit}};
+                                    {"shortest_window_limit_s", ledger.shortest_window_limit}};
   summary["hybrid"]["monitors"] = monitors.summary();
   summary["hybrid"]["far_field_retired"] = solver.far_field_retired();
   summary["hybrid"]["mpm_support_impulse_N_s"] = mpm_split;
