@@ -40,6 +40,10 @@ inline double relative_balance_error(const double energy, const double initial)
   return initial > 0 ? (energy - initial) / initial : 0.0;
 }
 
+/// The MPM scene's energy balance error: (accounted - initial) over the energy the run was
+/// given, the initial energy and the work of the prescribed motions.
+double mpm_balance_error(const mpm::Solver& solver, const mpm::SceneDiagnostics& d);
+
 /// `sample`: the target's failed points and intact totals over all ranks
 /// (collect_wound_sample, complete on rank 0), `d`: the diagnostics over all ranks,
 /// `supports`: Solver::support_impulses (collective, so taken by the caller on every rank).

@@ -48,8 +48,9 @@ bool linear_solver_failed(const std::string& text)
 
 const char* const linear_solver_remedy =
   "the implicit far field's linear system could not be solved in this step: its tangent "
-  "(with Far field/Volume averaging = cell, F-bar's, unsymmetric) lost its definiteness over "
-  "the window; shorter windows (fewer Hybrid/Substeps, or Far field/Time step), "
+  "lost its definiteness, most likely because the step moved the far field's cells far "
+  "enough to crush some (an interface guess far off, or strains over a long window); "
+  "shorter windows (fewer Hybrid/Substeps, or Far field/Time step), "
   "Far field/Volume averaging = none where the far field's tissue is compressible, or "
   "Far field/Integrator = central difference";
 } // namespace

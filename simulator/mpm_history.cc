@@ -22,9 +22,7 @@ std::vector<std::string> mpm_history_columns()
 
 std::vector<double> mpm_history_row(const mpm::Solver& solver, const mpm::SceneDiagnostics& d)
 {
-  const double initial = solver.initial_energy();
-  const double balance =
-    analysis::relative_balance_error(analysis::accounted_energy(solver, d), initial);
+  const double balance = analysis::mpm_balance_error(solver, d);
   mpm::Vector3 position = mpm::Vector3::Constant(NAN), velocity = position, force = position;
   if (solver.projectile() >= 0)
   {

@@ -135,8 +135,7 @@ std::string MpmStepper::progress() const
 
 double MpmStepper::energy_balance_error() const
 {
-  return analysis::relative_balance_error(
-    analysis::accounted_energy(solver, solver.diagnostics()), solver.initial_energy());
+  return analysis::mpm_balance_error(solver, solver.diagnostics());
 }
 
 std::string MpmStepper::energy_error_causes() const
