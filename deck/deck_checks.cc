@@ -1,5 +1,6 @@
 // Cross-entry checks of a deck.
 #include "deck/deck_checks.h"
+#include "deck/entry_checker.h"
 
 #include "io/mpi_launch.h"
 #include "mpm/slab_partition.h"
@@ -34,39 +35,6 @@ std::string point(const Vector3& p)
   return number(p[0]) + ", " + number(p[1]) + ", " + number(p[2]);
 }
 
-class Checker
-{
-public:
-  Checker(const EntryLocator& locator) : locator(locator) {}
-
-  /// Report `problem` about `entry` unless `ok`.
-  void require(const bool ok, const std::string& entry, const std::string& problem,
-               const std::string& remedy)
-  {
-    if (!ok)
-      messages.push_back(locator.where(entry) + ": " + entry + ": " + problem + "; " + remedy);
-  }
-
-  /// Same for a problem of several entries: located at the first one the deck sets.
-  void require_all(const bool ok, const std::vector<std::string>& entries,
-                   const std::string& problem, const std::string& remedy)
-  {
-    if (ok)
-      return;
-    std::string where = locator.where(entries.front()), names;
-    for (auto e = entries.rbegin(); e != entries.rend(); ++e)
-      if (locator.is_set(*e))
-        where = locator.where(*e);
-    for (const std::string& e : entries)
-      names += (names.empty() ? "" : ", ") + e;
-    messages.push_back(where + ": " + names + ": " + problem + "; " + remedy);
-  }
-
-  std::vector<std::string> messages;
-
-private:
-  const EntryLocator& locator;
-};
 
 /// A size that guarantees a material point inside the body when it is at least the point
 /// spacing s: the smallest box edge; for round shapes the diameter of the largest ball inside,
