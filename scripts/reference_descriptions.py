@@ -163,7 +163,7 @@ SUMMARY = [
     ("energy.external_work_J", "J", "FE runs: net work of the face load."),
     ("energy.external_work_in_J", "J", "FE runs: the work the load put in (its positive part)."),
     ("energy.balance_error", "-", "Energy neither present, dissipated nor removed, relative: MPM (accounted - initial) / (initial + abs(work_prescribed_J)); hybrid (accounted, both sides, less the adaptive zone's conversion changes, - initial) / initial; FE (kinetic + strain + dissipated - external work) / max(abs(external work), work put in)."),
-    ("momentum_audit", "-", "The momentum balance: bodies now + removed - (initial + supports + external + added). Null in an FE run loaded by a traction (its impulse is not booked)."),
+    ("momentum_audit", "-", "The momentum balance: bodies at the end + removed - (initial + supports + external + added). Null in an FE run loaded by a traction (its impulse is not booked)."),
     ("momentum_audit.initial_kg_m_s", "kg m/s", "Momentum of every body at the start."),
     ("momentum_audit.bodies_now_kg_m_s", "kg m/s", "Momentum of every body at the end (hybrid: with the far field and the impulse still in transit in a coupling window)."),
     ("momentum_audit.removed_kg_m_s", "kg m/s", "Momentum carried out by points that left the grid."),
@@ -276,7 +276,7 @@ HISTORY = [
     ("bullet_contact_force_<axis>", "N", "Force the other bodies exerted on the projectile in the last step (NaN without a projectile)."),
     ("contact_nodes", "-", "Grid nodes where bodies met in the last step."),
     ("active_nodes", "-", "Active grid nodes in the last step, summed over the ranks."),
-    ("points", "-", "MPM points now."),
+    ("points", "-", "MPM points at the row's time."),
     ("target_kinetic_J", "J", "Kinetic energy of every body but the projectile (hybrid: with the far field)."),
     ("target_momentum_<axis>", "kg m/s", "Momentum of every body but the projectile (hybrid: with the far field)."),
     ("support_impulse_<face>", "N s", "Impulse the face's supports gave since the start, along the face's normal axis (hybrid: MPM and far field)."),
@@ -291,7 +291,7 @@ HISTORY = [
     ("interface_mpm_work", "J", "Hybrid runs: work the MPM side did on the interface since the start."),
     ("interface_fe_work", "J", "Hybrid runs: work the far field received through the interface since the start."),
     ("interface_energy_error", "J", "Hybrid runs: interface_mpm_work - interface_fe_work."),
-    ("zone_volume", "m^3", "Hybrid runs: volume of the MPM zone's box now."),
+    ("zone_volume", "m^3", "Hybrid runs: volume of the MPM zone's box at the row's time."),
     ("converted_volume", "m^3", "Hybrid runs: far-field volume the adaptive zone has converted to points."),
     ("conversion_energy_change", "J", "Hybrid runs: the scene energy's change by those conversions."),
 ]
@@ -337,8 +337,8 @@ EXIT_STATUSES = [
     (2, "Bad command line or deck: an unknown command or option, a missing argument, a deck "
         "that cannot be read, an unknown or misspelt entry or subsection, a value outside its "
         "pattern, a failed cross-entry check, a `--restart` whose deck changes an entry a "
-        "restart may not change. Nothing is run or written. `vulnus point` and `vulnus compare` "
-        "give 2 for any error of theirs."),
+        "restart may not change. Nothing is run or written. `vulnus compare` gives 2 for any "
+        "error of its own, `vulnus point` for any error before it drives the point."),
     (130, "Stopped by SIGINT (128 + 2) after writing a checkpoint; continue with `vulnus run "
           "DECK --restart RUN_DIR`. No `summary.json` is written."),
     (143, "Stopped by SIGTERM (128 + 15) after writing a checkpoint, as for 130."),
