@@ -304,7 +304,7 @@ PARTICLE_FIELDS = [
     ("failure", "-", "Failure flag: 0 intact, 1 matrix failed, 2 fibers failed, 3 total failure (integer)."),
     ("fiber_direction", "-", "Current unit fiber direction F a0 / abs(F a0) for materials with fibers; zero for the others."),
     ("material_id", "-", "Index of the point's body in `Scene/Bodies` (0 for the first), not of its material (integer)."),
-    ("id", "-", "Stable point identifier: the point's index when the scene was built; it survives sorting and MPI moves (integer)."),
+    ("id", "-", "Stable point number: the scene's points numbered body by body in `Scene/Bodies` order when it is built (the same on any number of ranks), points the adaptive zone adds after the largest; it survives sorting and moves between ranks (integer)."),
     ("equivalent_plastic_strain", "-", "Equivalent plastic strain of laws with plasticity; 0 for the others."),
     ("reference_position", "m", "Position at the start (single precision)."),
     ("displacement", "m", "Position less reference position."),
