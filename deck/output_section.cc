@@ -18,10 +18,11 @@ void declare_output_section(EntryTable& table)
                 "Steps between rows of the CSV time history.");
   table.declare("Checkpoint step interval", "0", Patterns::Integer(0),
                 "Steps between checkpoints (run directory, checkpoints/); 0: none by step. "
-                "`vulnus run DECK --restart RUN_DIR` continues from the newest. Pure-MPM scenes.");
+                "`vulnus run DECK --restart RUN_DIR` continues from the newest. MPM, hybrid and FE "
+                "scenes.");
   table.declare("Checkpoint wall interval", "0", Patterns::Double(0.0),
                 "Wall-clock seconds between checkpoints; 0: none by wall time. A run stopped "
-                "by SIGINT or SIGTERM always writes one. Pure-MPM scenes.");
+                "by SIGINT or SIGTERM always writes one. MPM, hybrid and FE scenes.");
   table.declare("Checkpoints kept", "2", Patterns::Integer(1, 1000),
                 "Number of newest checkpoints kept; older ones are deleted.");
   table.declare("Wound face layer", "0.001", Patterns::Double(0.0, 1.0),
