@@ -1,5 +1,5 @@
 // summary.json of an MPM run: counts, throughput, failure by type, wound metrics, bullet
-// kinematics and the energy budget (keys listed in the wound-analysis issue and the README).
+// kinematics and the energy budget (every key is described in docs/reference/summary_json.md).
 #pragma once
 
 #include "analysis/momentum_audit.h"
