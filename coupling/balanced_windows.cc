@@ -73,6 +73,9 @@ void HybridSolver::open_implicit_window(const double window, const mpm::SharedNo
   std::ostringstream state;
   fe_solver->save(state);
   fe_state_at_window_start = state.str();
+  // Until the far field's step succeeds it stands at the window's start and has received
+  // nothing (a run stopped by a failed step counts its momentum so).
+  fe_window_impulse.assign(keys.size(), mpm::Vector3::Zero());
 }
 
 double HybridSolver::creation_residual(const mpm::SharedNodeState& mpm_side,
@@ -250,7 +253,7 @@ double HybridSolver::window_balance_tolerance(const double window,
                   1e-10 * largest_mass * split.fe.interface_cell_size / window);
 }
 
-void HybridSolver::chord_iterate(const double window,
+double HybridSolver::chord_iterate(const double window,
                                  const Eigen::SparseLU<Eigen::SparseMatrix<double>>& solver,
                                  const double tolerance,
                                  const std::function<double(Eigen::VectorXd&)>& residual)
@@ -258,6 +261,11 @@ void HybridSolver::chord_iterate(const double window,
   const std::vector<mpm::Vector3>& free = free_components;
   Eigen::VectorXd g;
   double largest = residual(g);
+  // A probed effective mass that is off (a window of many wave transits) makes the iteration
+  // wander: the far field is left at the best guess it met, not at the last.
+  double best = largest;
+  std::vector<mpm::Vector3> best_guess = velocity_end;
+  bool at_best = true;
   unsigned int iteration = 0;
   for (; largest > tolerance && iteration < max_balance_iterations; ++iteration)
   {
@@ -266,18 +274,43 @@ void HybridSolver::chord_iterate(const double window,
       velocity_end[k] -= dv.segment<3>(3 * static_cast<Eigen::Index>(k)).cwiseProduct(free[k]);
     std::istringstream state(fe_state_at_window_start);
     fe_solver->restore(state);
-    fe_window_impulse = step_fe(window);
+    try
+    {
+      fe_window_impulse = step_fe(window);
+    }
+    catch (const std::runtime_error&)
+    {
+      // The guess crushed far-field cells (its Newton step failed on every rank alike).
+      at_best = false;
+      ++iteration;
+      break;
+    }
     largest = residual(g);
+    at_best = largest < best;
+    if (at_best)
+    {
+      best = largest;
+      best_guess = velocity_end;
+    }
   }
   book.balance_solves += iteration;
+  if (!at_best)
+  {
+    velocity_end = best_guess;
+    std::istringstream state(fe_state_at_window_start);
+    fe_solver->restore(state);
+    fe_window_impulse = step_fe(window);
+    largest = residual(g);
+    ++book.balance_solves;
+  }
   if (largest <= tolerance)
-    return;
+    return 0.0;
   ++book.balance_unconverged_windows;
   // Relative to the interface's momentum scale, or (an interface still at rest) to the scale
   // whose share the tolerance's floor is.
-  book.largest_balance_residual =
-      std::max(book.largest_balance_residual,
-               largest / std::max(balance_scale, tolerance / balance_tolerance));
+  const double left = largest / std::max(balance_scale, tolerance / balance_tolerance);
+  book.largest_balance_residual = std::max(book.largest_balance_residual, left);
+  return left;
 }
 
 void HybridSolver::balance_window(const double window, const double dt,

@@ -15,6 +15,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <sstream>
+#include <stdexcept>
 #include <limits>
 
 namespace vulnus::coupling
@@ -29,7 +32,7 @@ void HybridSolver::factor_dashpot(const double ratio, const std::vector<double>&
   dashpot_mass = mpm_mass;
 }
 
-void HybridSolver::step_fe_to_impulse(const double window, const std::vector<mpm::Vector3>& target)
+double HybridSolver::step_fe_to_impulse(const double window, const std::vector<mpm::Vector3>& target)
 {
   const std::vector<mpm::Vector3>& free = free_components;
   auto residual = [&](Eigen::VectorXd& g)
@@ -44,21 +47,28 @@ void HybridSolver::step_fe_to_impulse(const double window, const std::vector<mpm
     }
     return largest;
   };
-  chord_iterate(window, balance_free_solver, window_balance_tolerance(window, {}), residual);
+  return chord_iterate(window, balance_free_solver, window_balance_tolerance(window, {}),
+                       residual);
 }
 
-void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
-                                    const bool last_substep, const mpm::SharedNodeState& mpm_side,
-                                    std::vector<mpm::Vector3>& v_start,
-                                    std::vector<mpm::Vector3>& v_end)
+bool HybridSolver::halve_dashpot_windows(const double window, const double dt)
 {
-  const double window = window_end - window_start;
+  const double shortest = std::max(fe_solver->shortest_wave_transit(), dt);
+  if (window <= shortest * (1.0 + 1e-9))
+    return false;
+  dashpot_window_limit = std::max(0.5 * window, shortest);
+  ++book.windows_halved;
+  if (book.shortest_halved_window == 0.0 || dashpot_window_limit < book.shortest_halved_window)
+    book.shortest_halved_window = dashpot_window_limit;
+  return true;
+}
+
+void HybridSolver::dashpot_free_step(const mpm::SharedNodeState& mpm_side, const double dt)
+{
   const std::size_t n = keys.size();
-  const std::vector<mpm::Vector3>& free = free_components;
-  const double ratio = window / dt;
-  if (first_substep)
+  for (;;)
   {
-    open_implicit_window(window, mpm_side);
+    const double window = window_end - window_start;
     // The dashpot must be no softer than the far field over this window: a matrix built for a
     // longer window (a larger effective mass) is rebuilt, one for a somewhat shorter is kept.
     if (static_cast<std::size_t>(balance_matrix.rows()) != 3 * n ||
@@ -67,9 +77,6 @@ void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
       build_balance_matrix(window);
       factor_effective_mass(std::vector<double>(n, 0.0), balance_free_solver);
     }
-    factor_dashpot(ratio, mpm_side.mass);
-    if (interface_now.size() != n)
-      interface_now = velocity_start;
     // The free step: no impulse on the far field's interface nodes, from the guess that its
     // interface keeps its velocity for about two wave transits of the smallest cell and then
     // stands (its mean over the window V = keep v_start): a window of many transits would
@@ -78,12 +85,79 @@ void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
     const double keep = std::min(1.0, 2.0 * fe_solver->shortest_wave_transit() / window);
     for (std::size_t k = 0; k < n; ++k)
       velocity_end[k] = (2.0 * keep - 1.0) * velocity_start[k];
-    fe_window_impulse = step_fe(window);
-    step_fe_to_impulse(window, std::vector<mpm::Vector3>(n, mpm::Vector3::Zero()));
-    dashpot_free_velocity.resize(n);
-    for (std::size_t k = 0; k < n; ++k)
-      dashpot_free_velocity[k] = 0.5 * (velocity_start[k] + velocity_end[k]);
+    bool taken = false;
+    std::exception_ptr failure;
+    try
+    {
+      fe_window_impulse = step_fe(window);
+      taken = step_fe_to_impulse(window, std::vector<mpm::Vector3>(n, mpm::Vector3::Zero())) <=
+              window_residual_tolerance;
+    }
+    catch (const std::runtime_error&)
+    {
+      failure = std::current_exception();
+    }
+    if (taken)
+      break;
+    if (!halve_dashpot_windows(window, dt))
+    {
+      // As short as a window may be: a failed step stops the run, an unmet free end is
+      // carried like any unbalanced window's.
+      if (failure)
+        std::rethrow_exception(failure);
+      break;
+    }
+    // Again over the shorter window, from the far field's state at its start.
+    window_end = window_start + dashpot_window_limit;
+    std::istringstream state(fe_state_at_window_start);
+    fe_solver->restore(state);
+    predict_interface(window_end - window_start, mpm_side);
   }
+  dashpot_free_velocity.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    dashpot_free_velocity[k] = 0.5 * (velocity_start[k] + velocity_end[k]);
+}
+
+void HybridSolver::check_dashpot_window(const double residual)
+{
+  // What the MPM side gave the interface in this window and what the far field received: the
+  // window may dissipate, not create (exact for a far field that answers as its effective
+  // mass says; a probed mass off over many transits, or a far field that yields, breaks it).
+  const double created = energy_error_at_window_start - book.energy_error();
+  const double crossed = std::max(std::abs(book.mpm_work - mpm_work_at_window_start),
+                                  std::abs(book.fe_work - fe_work_at_window_start));
+  // Judged against the most any window has carried: a quiet window's round-off is no cause.
+  largest_window_work = std::max(largest_window_work, crossed);
+  const double window = window_end - window_start;
+  if (residual > window_residual_tolerance ||
+      created > window_energy_tolerance * largest_window_work)
+    halve_dashpot_windows(window, 0.0);
+}
+
+void HybridSolver::exchange_dashpot(const double time, const double dt, const bool first_substep,
+                                    const mpm::SharedNodeState& mpm_side,
+                                    std::vector<mpm::Vector3>& v_start,
+                                    std::vector<mpm::Vector3>& v_end)
+{
+  const std::size_t n = keys.size();
+  const std::vector<mpm::Vector3>& free = free_components;
+  if (first_substep)
+  {
+    open_implicit_window(window_end - window_start, mpm_side);
+    energy_error_at_window_start = book.energy_error();
+    mpm_work_at_window_start = book.mpm_work;
+    fe_work_at_window_start = book.fe_work;
+    dashpot_free_step(mpm_side, dt);
+    if (interface_now.size() != n)
+      interface_now = velocity_start;
+  }
+  // The free step may have shortened this window: its last substep is the one that reaches
+  // the new end.
+  const double window = window_end - window_start;
+  const double ratio = window / dt;
+  const bool last_substep = time + dt >= window_end - 1e-9 * window;
+  if (first_substep)
+    factor_dashpot(ratio, mpm_side.mass);
   v_start = interface_now;
   const std::vector<mpm::Vector3>& mean_free = dashpot_free_velocity;
   // A substep much shorter or longer than the factored one (the window's last) is factored
@@ -138,9 +212,10 @@ void HybridSolver::exchange_dashpot(const double dt, const bool first_substep,
     std::vector<mpm::Vector3> target(n);
     for (std::size_t k = 0; k < n; ++k)
       target[k] = correction[k] - created[k];
-    step_fe_to_impulse(window, target);
+    const double residual = step_fe_to_impulse(window, target);
     book_fe_side(fe_window_impulse);
     fe_state_at_window_start.clear();
+    check_dashpot_window(residual);
   }
 }
 } // namespace vulnus::coupling

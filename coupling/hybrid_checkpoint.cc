@@ -9,7 +9,7 @@ namespace binary = mpm::binary;
 
 namespace
 {
-constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '5'};
+constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '6'};
 } // namespace
 
 void HybridSolver::save(std::ostream& out) const
@@ -58,6 +58,9 @@ void HybridSolver::save(std::ostream& out) const
   binary::put_vector(out, dashpot_free_velocity);
   binary::put(out, dashpot_ratio);
   binary::put_vector(out, dashpot_mass);
+  for (const double v : {dashpot_window_limit, energy_error_at_window_start,
+                         mpm_work_at_window_start, fe_work_at_window_start, largest_window_work})
+    binary::put(out, v);
   out.write(tag, sizeof(tag));
   if (!out)
     throw std::runtime_error("hybrid checkpoint could not be written");
@@ -147,6 +150,9 @@ void HybridSolver::restore(std::istream& in)
   binary::get_vector(in, dashpot_free_velocity);
   binary::get(in, dashpot_ratio);
   binary::get_vector(in, dashpot_mass);
+  for (double* v : {&dashpot_window_limit, &energy_error_at_window_start,
+                    &mpm_work_at_window_start, &fe_work_at_window_start, &largest_window_work})
+    binary::get(in, *v);
   if (dashpot_windows() && rows > 0 && dashpot_mass.size() == keys.size())
   {
     factor_effective_mass(std::vector<double>(keys.size(), 0.0), balance_free_solver);

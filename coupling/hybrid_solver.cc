@@ -158,6 +158,8 @@ void HybridSolver::advance()
       window = std::min(window, split.hybrid.substeps * mpm_solver->stable_time_step());
     // Balanced implicit windows stay within one wave transit of the far field's smallest
     // cell: beyond it the interface gains energy (docs/far_field.md, section 1).
+    if (dashpot_windows() && dashpot_window_limit > 0.0)
+      window = std::min(window, dashpot_window_limit);
     if (balances_windows() && !dashpot_windows())
       if (const double limit = fe_solver->shortest_wave_transit(); window > limit)
       {
@@ -309,7 +311,7 @@ void HybridSolver::exchange(const double time, const double dt,
   const bool last_substep = time + dt >= window_end - 1e-9 * window;
   if (dashpot_windows())
   {
-    exchange_dashpot(dt, first_substep, last_substep, mpm_side, v_start, v_end);
+    exchange_dashpot(time, dt, first_substep, mpm_side, v_start, v_end);
     return;
   }
   if (balances_windows())

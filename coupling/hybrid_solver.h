@@ -216,20 +216,32 @@ private:
   /// field's free step gives its mean free interface velocity; every substep solves the shared
   /// nodes' velocity against the MPM side's kick and a dashpot of the far field's effective
   /// interface mass; the last substep steps the far field with the impulse the MPM side took.
-  void exchange_dashpot(double dt, bool first_substep, bool last_substep,
+  void exchange_dashpot(double time, double dt, bool first_substep,
                         const mpm::SharedNodeState& mpm_side, std::vector<mpm::Vector3>& v_start,
                         std::vector<mpm::Vector3>& v_end);
   /// Re-steps the far field from the window's start until its interface nodes receive
   /// `target` (by key) beyond what its body transmits, with balance_free_solver's chord
-  /// iteration (an unconverged one is booked).
-  void step_fe_to_impulse(double window, const std::vector<mpm::Vector3>& target);
+  /// iteration (an unconverged one is booked); returns chord_iterate's residual left.
+  double step_fe_to_impulse(double window, const std::vector<mpm::Vector3>& target);
+  /// A dashpot window's free step, halving the window (window_end moves) while the far field
+  /// cannot take it: its step fails, or the chord iteration does not find the free end.
+  void dashpot_free_step(const mpm::SharedNodeState& mpm_side, double dt);
+  /// After a dashpot window's far-field step, which left `residual` of its impulse unmet
+  /// (relative): later windows are halved if that is beyond window_residual_tolerance or the
+  /// far field received more work than the MPM side gave.
+  void check_dashpot_window(double residual);
+  /// Halves the dashpot windows from now on (down to one wave transit of the far field's
+  /// smallest cell, and to no less than `dt`); false if they were that short already.
+  bool halve_dashpot_windows(double window, double dt);
   /// The balance's tolerance for a window, kg m/s (balance_scale updated with the interface's
   /// momentum, its masses the FE ones plus mpm_mass if given).
   double window_balance_tolerance(double window, const std::vector<double>& mpm_mass);
   /// Newton's chord iteration of a window: while residual(g) (its largest component) exceeds
   /// the tolerance, velocity_end moves by -solver.solve(g) and the far field re-steps from the
-  /// window's start; books the re-steps and an unconverged window.
-  void chord_iterate(double window, const Eigen::SparseLU<Eigen::SparseMatrix<double>>& solver,
+  /// window's start; books the re-steps and an unconverged window. The far field ends at the
+  /// best guess met (a guess whose step fails ends the iteration). Returns the residual left
+  /// relative to the interface's momentum scale (0 if converged).
+  double chord_iterate(double window, const Eigen::SparseLU<Eigen::SparseMatrix<double>>& solver,
                      double tolerance, const std::function<double(Eigen::VectorXd&)>& residual);
   /// dashpot_solver for substeps of window / dt = ratio with these MPM masses.
   void factor_dashpot(double ratio, const std::vector<double>& mpm_mass);
@@ -305,6 +317,19 @@ private:
   Eigen::SparseLU<Eigen::SparseMatrix<double>> dashpot_solver;
   double dashpot_ratio = 0.0;        ///< window / dt dashpot_solver was factored with
   std::vector<double> dashpot_mass;  ///< and the MPM masses
+  /// Longest dashpot window from now on, s (0: the deck's): halved after a window the far field
+  /// could not take.
+  double dashpot_window_limit = 0.0;
+  /// The interface's energy error (InterfaceLedger::energy_error) and the work of each side
+  /// when this window opened, J.
+  double energy_error_at_window_start = 0.0;
+  double mpm_work_at_window_start = 0.0;
+  double fe_work_at_window_start = 0.0;
+  double largest_window_work = 0.0; ///< the most work that crossed the interface in one window, J
+  /// Dashpot windows that create energy beyond this share of largest_window_work, or
+  /// leave more than this share of the interface's momentum scale unmet, are halved.
+  static constexpr double window_energy_tolerance = 0.01;
+  static constexpr double window_residual_tolerance = 1e-3;
   double balance_window_length = 0.0; ///< s
   std::size_t exact_balance_limit = 750;
   double balance_scale = 0.0; ///< largest (m_fe + m_mpm) |v| of an interface node so far, kg m/s

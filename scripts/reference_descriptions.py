@@ -205,6 +205,8 @@ SUMMARY = [
     ("hybrid.balance.effective_mass_seconds", "s", "Their wall time."),
     ("hybrid.balance.windows_shortened_to_one_transit", "-", "Windows shortened to one wave transit of the far field's smallest cell."),
     ("hybrid.balance.shortest_window_limit_s", "s", "The shortest such limit met (0 if none)."),
+    ("hybrid.balance.windows_halved", "-", "Dashpot windows: times the windows were halved because the far field could not take one (its step failed or more than 1e-3 of the window's impulse was left unmet) or one created more than 1 % of the most work a window has carried (0 for balanced windows)."),
+    ("hybrid.balance.shortest_halved_window_s", "s", "Dashpot windows: the window length they were halved to at the shortest (0 if never)."),
     ("hybrid.monitors", "-", "The validity monitors: for each, its peak over the run, its bound and whether the peak exceeded it (the run warns once when it does)."),
     ("hybrid.monitors.interface_displacement_over_cell", "-", "Largest FE interface-node displacement over the MPM cell size (bound 0.25)."),
     ("hybrid.monitors.interface_displacement_over_cell.peak", "-", "Peak."),
