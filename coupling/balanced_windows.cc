@@ -259,6 +259,12 @@ double HybridSolver::chord_iterate(const double window,
                                  const std::function<double(Eigen::VectorXd&)>& residual)
 {
   const std::vector<mpm::Vector3>& free = free_components;
+  auto restep = [&]
+  {
+    std::istringstream state(fe_state_at_window_start);
+    fe_solver->restore(state);
+    fe_window_impulse = step_fe(window);
+  };
   Eigen::VectorXd g;
   double largest = residual(g);
   // A probed effective mass that is off (a window of many wave transits) makes the iteration
@@ -272,11 +278,9 @@ double HybridSolver::chord_iterate(const double window,
     const Eigen::VectorXd dv = solver.solve(g);
     for (std::size_t k = 0; k < keys.size(); ++k)
       velocity_end[k] -= dv.segment<3>(3 * static_cast<Eigen::Index>(k)).cwiseProduct(free[k]);
-    std::istringstream state(fe_state_at_window_start);
-    fe_solver->restore(state);
     try
     {
-      fe_window_impulse = step_fe(window);
+      restep();
     }
     catch (const std::runtime_error&)
     {
@@ -297,9 +301,7 @@ double HybridSolver::chord_iterate(const double window,
   if (!at_best)
   {
     velocity_end = best_guess;
-    std::istringstream state(fe_state_at_window_start);
-    fe_solver->restore(state);
-    fe_window_impulse = step_fe(window);
+    restep();
     largest = residual(g);
     ++book.balance_solves;
   }

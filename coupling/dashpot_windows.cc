@@ -56,10 +56,8 @@ bool HybridSolver::halve_dashpot_windows(const double window, const double dt)
   const double shortest = std::max(fe_solver->shortest_wave_transit(), dt);
   if (window <= shortest * (1.0 + 1e-9))
     return false;
-  dashpot_window_limit = std::max(0.5 * window, shortest);
+  book.dashpot_window_limit = std::max(0.5 * window, shortest);
   ++book.windows_halved;
-  if (book.shortest_halved_window == 0.0 || dashpot_window_limit < book.shortest_halved_window)
-    book.shortest_halved_window = dashpot_window_limit;
   return true;
 }
 
@@ -108,7 +106,7 @@ void HybridSolver::dashpot_free_step(const mpm::SharedNodeState& mpm_side, const
       break;
     }
     // Again over the shorter window, from the far field's state at its start.
-    window_end = window_start + dashpot_window_limit;
+    window_end = window_start + book.dashpot_window_limit;
     std::istringstream state(fe_state_at_window_start);
     fe_solver->restore(state);
     predict_interface(window_end - window_start, mpm_side);
@@ -123,9 +121,10 @@ void HybridSolver::check_dashpot_window(const double residual)
   // What the MPM side gave the interface in this window and what the far field received: the
   // window may dissipate, not create (exact for a far field that answers as its effective
   // mass says; a probed mass off over many transits, or a far field that yields, breaks it).
-  const double created = energy_error_at_window_start - book.energy_error();
-  const double crossed = std::max(std::abs(book.mpm_work - mpm_work_at_window_start),
-                                  std::abs(book.fe_work - fe_work_at_window_start));
+  const double given = book.mpm_work - mpm_work_at_window_start;
+  const double received = book.fe_work - fe_work_at_window_start;
+  const double created = received - given;
+  const double crossed = std::max(std::abs(given), std::abs(received));
   // Judged against the most any window has carried: a quiet window's round-off is no cause.
   largest_window_work = std::max(largest_window_work, crossed);
   const double window = window_end - window_start;
@@ -144,7 +143,6 @@ void HybridSolver::exchange_dashpot(const double time, const double dt, const bo
   if (first_substep)
   {
     open_implicit_window(window_end - window_start, mpm_side);
-    energy_error_at_window_start = book.energy_error();
     mpm_work_at_window_start = book.mpm_work;
     fe_work_at_window_start = book.fe_work;
     dashpot_free_step(mpm_side, dt);

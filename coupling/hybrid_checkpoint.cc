@@ -58,8 +58,7 @@ void HybridSolver::save(std::ostream& out) const
   binary::put_vector(out, dashpot_free_velocity);
   binary::put(out, dashpot_ratio);
   binary::put_vector(out, dashpot_mass);
-  for (const double v : {dashpot_window_limit, energy_error_at_window_start,
-                         mpm_work_at_window_start, fe_work_at_window_start, largest_window_work})
+  for (const double v : {mpm_work_at_window_start, fe_work_at_window_start, largest_window_work})
     binary::put(out, v);
   out.write(tag, sizeof(tag));
   if (!out)
@@ -150,8 +149,7 @@ void HybridSolver::restore(std::istream& in)
   binary::get_vector(in, dashpot_free_velocity);
   binary::get(in, dashpot_ratio);
   binary::get_vector(in, dashpot_mass);
-  for (double* v : {&dashpot_window_limit, &energy_error_at_window_start,
-                    &mpm_work_at_window_start, &fe_work_at_window_start, &largest_window_work})
+  for (double* v : {&mpm_work_at_window_start, &fe_work_at_window_start, &largest_window_work})
     binary::get(in, *v);
   if (dashpot_windows() && rows > 0 && dashpot_mass.size() == keys.size())
   {

@@ -156,10 +156,11 @@ void HybridSolver::advance()
     double window = fe_solver->next_time_step();
     if (split.hybrid.substeps > 0)
       window = std::min(window, split.hybrid.substeps * mpm_solver->stable_time_step());
+    // Dashpot windows keep to the length they were halved to (dashpot_windows.cc).
+    if (dashpot_windows() && book.dashpot_window_limit > 0.0)
+      window = std::min(window, book.dashpot_window_limit);
     // Balanced implicit windows stay within one wave transit of the far field's smallest
     // cell: beyond it the interface gains energy (docs/far_field.md, section 1).
-    if (dashpot_windows() && dashpot_window_limit > 0.0)
-      window = std::min(window, dashpot_window_limit);
     if (balances_windows() && !dashpot_windows())
       if (const double limit = fe_solver->shortest_wave_transit(); window > limit)
       {

@@ -317,12 +317,7 @@ private:
   Eigen::SparseLU<Eigen::SparseMatrix<double>> dashpot_solver;
   double dashpot_ratio = 0.0;        ///< window / dt dashpot_solver was factored with
   std::vector<double> dashpot_mass;  ///< and the MPM masses
-  /// Longest dashpot window from now on, s (0: the deck's): halved after a window the far field
-  /// could not take.
-  double dashpot_window_limit = 0.0;
-  /// The interface's energy error (InterfaceLedger::energy_error) and the work of each side
-  /// when this window opened, J.
-  double energy_error_at_window_start = 0.0;
+  /// The work of each side on the interface when this window opened, J.
   double mpm_work_at_window_start = 0.0;
   double fe_work_at_window_start = 0.0;
   double largest_window_work = 0.0; ///< the most work that crossed the interface in one window, J

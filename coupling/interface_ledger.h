@@ -36,9 +36,10 @@ struct InterfaceLedger
   unsigned long windows_shortened = 0;
   double shortest_window_limit = 0.0;
   /// Dashpot windows halved because the far field could not take one (its step failed or its
-  /// impulse was left unmet) or one created energy, and the shortest window so far, s.
+  /// impulse was left unmet) or one created energy, and the longest window from then on, s
+  /// (0: the deck's; it only shrinks).
   unsigned long windows_halved = 0;
-  double shortest_halved_window = 0.0;
+  double dashpot_window_limit = 0.0;
   unsigned long mpm_steps = 0;
 
   /// Work done by MPM minus work received by FE (the interface energy error), J.

@@ -338,7 +338,7 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                                     {"windows_shortened_to_one_transit", ledger.windows_shortened},
                                     {"shortest_window_limit_s", ledger.shortest_window_limit},
                                     {"windows_halved", ledger.windows_halved},
-                                    {"shortest_halved_window_s", ledger.shortest_halved_window}};
+                                    {"shortest_halved_window_s", ledger.dashpot_window_limit}};
   summary["hybrid"]["monitors"] = monitors.summary();
   summary["hybrid"]["far_field_retired"] = solver.far_field_retired();
   summary["hybrid"]["mpm_support_impulse_N_s"] = mpm_split;
@@ -389,7 +389,7 @@ std::string HybridStepper::final_report(const nlohmann::json& summary) const
   if (ledger.windows_halved > 0)
     o << ", dashpot windows halved " << ledger.windows_halved
       << " times where the far field could not take them or they created energy (to "
-      << ledger.shortest_halved_window << " s)";
+      << ledger.dashpot_window_limit << " s)";
   // A window steps the far field to its end first: a run that stops inside one leaves the
   // far field's state (mesh output, supports, energies) at the window's end.
   if (!solver.far_field_retired() &&
