@@ -34,18 +34,35 @@ std::pair<std::array<double, 3>, std::array<double, 3>> HybridSolver::zone_neede
   const double origin[3] = {split.mpm.domain_min[0], split.mpm.domain_min[1],
                             split.mpm.domain_min[2]};
   const double reach = (split.hybrid.adaptive.margin_cells + 0.5) * h;
+  const AdaptiveZoneParameters& rules = split.hybrid.adaptive;
   std::uint64_t beyond = 0;
-  std::vector<dealii::Point<3>> places =
-    fe_solver->cells_nearing_failure(split.hybrid.adaptive.threshold);
-  // Interface nodes that moved too far from their grid nodes, from every rank.
-  std::vector<double> moved;
-  for (const fem::NodeRecord& node : fe_solver->interface_nodes())
-    if (fe_solver->displacement(node).norm() > split.hybrid.adaptive.interface_displacement * h)
-      moved.insert(moved.end(), {node.position[0], node.position[1], node.position[2]});
-  for (const std::vector<double>& theirs : dealii::Utilities::MPI::all_gather(comm, moved))
-    for (std::size_t i = 0; i + 2 < theirs.size(); i += 3)
-      places.emplace_back(theirs[i], theirs[i + 1], theirs[i + 2]);
-  for (const dealii::Point<3>& c : places)
+  std::vector<std::pair<dealii::Point<3>, ZoneCause>> places;
+  for (const dealii::Point<3>& c : fe_solver->cells_nearing_failure(rules.threshold))
+    places.emplace_back(c, ZoneCause::failure);
+  if (rules.interface_motion == InterfaceMotion::total)
+  {
+    // Interface nodes that moved too far from their grid nodes, from every rank.
+    std::vector<double> moved;
+    for (const fem::NodeRecord& node : fe_solver->interface_nodes())
+      if (fe_solver->displacement(node).norm() > rules.interface_displacement * h)
+        moved.insert(moved.end(), {node.position[0], node.position[1], node.position[2]});
+    for (const std::vector<double>& theirs : dealii::Utilities::MPI::all_gather(comm, moved))
+      for (std::size_t i = 0; i + 2 < theirs.size(); i += 3)
+        places.emplace_back(dealii::Point<3>(theirs[i], theirs[i + 1], theirs[i + 2]),
+                            ZoneCause::interface_motion);
+  }
+  fem::CellMotionLimits limits;
+  limits.non_affine =
+    rules.interface_motion == InterfaceMotion::non_affine ? rules.interface_displacement : 0.0;
+  limits.deviatoric_stretch = rules.distortion;
+  limits.jacobian_ratio = rules.jacobian_ratio;
+  if (limits.non_affine > 0.0 || limits.deviatoric_stretch > 0.0 || limits.jacobian_ratio > 0.0)
+    for (const fem::FlaggedCell& cell : fe_solver->cells_moving_unlike_elements(limits))
+      places.emplace_back(cell.centre, cell.cause == fem::CellMotionCause::distortion
+                                         ? ZoneCause::distortion
+                                         : ZoneCause::interface_motion);
+  last_flagged.fill(0);
+  for (const auto& [c, cause] : places)
   {
     bool inside_limit = true;
     for (int d = 0; d < 3; ++d)
@@ -56,6 +73,7 @@ std::pair<std::array<double, 3>, std::array<double, 3>> HybridSolver::zone_neede
       ++beyond;
       continue;
     }
+    ++last_flagged[static_cast<int>(cause)];
     bool cut_by_limit = false;
     for (int d = 0; d < 3; ++d)
     {
@@ -106,6 +124,8 @@ void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
   record.zone_max = new_max;
   record.energy_before = energy_of_both(mpm_solver->diagnostics(), fe_solver->diagnostics());
   record.momentum_before = total_momentum();
+  record.flagged = last_flagged;
+  last_flagged.fill(0);
   const unsigned long long cells_before = fe_solver->n_active_cells();
 
   // The converted cells' material as points of the split body (each rank its own cells).

@@ -9,7 +9,7 @@ namespace binary = mpm::binary;
 
 namespace
 {
-constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '6'};
+constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '7'};
 } // namespace
 
 void HybridSolver::save(std::ostream& out) const

@@ -32,6 +32,13 @@ enum class ZoneStart
   around_path
 };
 
+/// Which motion of an interface node converts its cell.
+enum class InterfaceMotion
+{
+  total,
+  non_affine
+};
+
 /// Adaptive zone (docs/adaptive_zone.md): far-field cells whose material nears failure turn
 /// into material points, the zone box growing to hold them.
 struct AdaptiveZoneParameters
@@ -41,8 +48,16 @@ struct AdaptiveZoneParameters
   /// (matrix shear over its limit, fiber stretch - 1 over limit - 1) or has failed.
   double threshold = 0.5;
   /// A cell also converts when an interface node of it has moved this fraction of a grid
-  /// cell (the shared grid node stays put: the coupling assumes small interface motion).
+  /// cell (the shared grid node stays put: the coupling assumes small interface motion):
+  /// its whole displacement, or its departure from its cell's best-fit affine motion, which
+  /// waves and rigid motion do not make.
   double interface_displacement = 0.1;
+  InterfaceMotion interface_motion = InterfaceMotion::total;
+  /// A cell converts when its best-fit affine stretch exceeds ln(lambda_max / lambda_min) =
+  /// this (0: not checked) or its smallest corner Jacobian falls below this fraction of its
+  /// largest (0: not checked).
+  double distortion = 0.0;
+  double jacobian_ratio = 0.0;
   /// The zone grows to hold a converting cell with this many cells around it.
   unsigned int margin_cells = 2;
   /// How far beyond its start the zone may grow on every side, m; the far-field mesh has

@@ -28,7 +28,8 @@ dealii::Tensor<1, 3> to_tensor(const mpm::Vector3& v)
 
 HybridSolver::HybridSolver(const HybridScene& scene, MPI_Comm communicator,
                            const std::function<void(fem::FarFieldSolver&)>& before_fe_setup)
-  : split(scene), comm(communicator), prepare_far_field(before_fe_setup)
+  : split(scene), comm(communicator), prepare_far_field(before_fe_setup),
+    start_zone_min(scene.hybrid.zone_min), start_zone_max(scene.hybrid.zone_max)
 {
   mpm_solver = std::make_unique<mpm::Solver>(split.mpm, communicator);
   fe_solver = build_far_field();

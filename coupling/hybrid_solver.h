@@ -46,6 +46,16 @@
 
 namespace vulnus::coupling
 {
+/// Why the adaptive zone took a far-field cell: its material neared failure, an interface
+/// node of it moved too far, or it is distorted beyond what an element follows.
+enum class ZoneCause
+{
+  failure,
+  interface_motion,
+  distortion
+};
+constexpr int n_zone_causes = 3;
+
 /// One growth of the adaptive zone.
 struct ZoneConversion
 {
@@ -63,6 +73,9 @@ struct ZoneConversion
   Eigen::Vector3d momentum_before = Eigen::Vector3d::Zero();
   Eigen::Vector3d momentum_after = Eigen::Vector3d::Zero();
   double seconds = 0.0; ///< wall-clock time of the conversion
+  /// Cells (or interface nodes) inside the limit that asked for it, by ZoneCause; all zero
+  /// when the whole limit converts because the far field has no stiffness left.
+  std::array<std::uint64_t, n_zone_causes> flagged{{0, 0, 0}};
 };
 
 class HybridSolver : public mpm::InterfacePartner
@@ -149,6 +162,9 @@ public:
   /// The most cells nearing failure and interface nodes moved too far, at one check, that
   /// the zone could not take in with their margin because its limit was in the way.
   std::uint64_t cells_beyond_limit() const { return n_cells_beyond_limit; }
+  /// The split body's share held by the MPM zone, averaged over the run's time so far
+  /// (coupling/zone_fraction.cc).
+  double time_averaged_zone_fraction() const;
   /// Wall-clock seconds spent checking where the zone must grow, and converting.
   double zone_check_seconds() const { return check_seconds; }
   double zone_conversion_seconds() const
@@ -338,6 +354,10 @@ private:
   std::function<void(fem::FarFieldSolver&)> prepare_far_field;
   std::vector<ZoneConversion> zone_conversions;
   std::uint64_t n_cells_beyond_limit = 0;
+  /// The zone the deck starts with (a restart builds it again before it converts).
+  std::array<double, 3> start_zone_min{{0.0, 0.0, 0.0}}, start_zone_max{{0.0, 0.0, 0.0}};
+  /// What the last check flagged, by ZoneCause (the next conversion records it).
+  std::array<std::uint64_t, n_zone_causes> last_flagged{{0, 0, 0}};
   std::uint64_t last_zone_check = 0; ///< MPM step of the last check
   double check_seconds = 0.0;
   bool retired = false;

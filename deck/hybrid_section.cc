@@ -31,8 +31,20 @@ void declare_hybrid_section(EntryTable& table)
                 "has failed.");
   table.declare("Adaptive zone interface displacement", "0.1", Patterns::Double(0.0, 10.0),
                 "The zone also grows where an interface node has moved this fraction of a "
-                "grid cell (the validity monitor warns at 0.25; a window of the far field moves "
-                "it by up to a few hundredths).");
+                "grid cell, as Adaptive zone interface motion measures it (the validity monitor "
+                "warns at 0.25 of its whole displacement; a window of the far field moves it by "
+                "up to a few hundredths).");
+  table.declare("Adaptive zone interface motion", "total", Patterns::Selection("total|non-affine"),
+                "What of an interface node's motion Adaptive zone interface displacement bounds: "
+                "total (its whole displacement) or non-affine (its departure from its far-field "
+                "cell's best-fit rigid-plus-uniform-strain motion, which waves and rigid motion "
+                "do not make).");
+  table.declare("Adaptive zone distortion", "0", Patterns::Double(0.0, 10.0),
+                "A far-field cell converts when its best-fit uniform stretch reaches "
+                "ln(largest / smallest principal stretch) = this; 0: not checked.");
+  table.declare("Adaptive zone corner Jacobian ratio", "0", Patterns::Double(0.0, 1.0),
+                "A far-field cell converts when its smallest corner Jacobian falls below this "
+                "fraction of its largest; 0: not checked.");
   table.declare("Adaptive zone margin", "2", Patterns::Integer(0, 1000),
                 "Cells of tissue the grown zone keeps around a converting cell.");
   table.declare("Adaptive zone reach", "0.01", Patterns::Double(0.0, 10.0),
@@ -81,6 +93,11 @@ void parse_hybrid_section(dealii::ParameterHandler& prm, coupling::HybridParamet
   hybrid.adaptive.enabled = prm.get_bool("Adaptive zone");
   hybrid.adaptive.threshold = prm.get_double("Adaptive zone threshold");
   hybrid.adaptive.interface_displacement = prm.get_double("Adaptive zone interface displacement");
+  hybrid.adaptive.interface_motion = prm.get("Adaptive zone interface motion") == "non-affine"
+                                       ? coupling::InterfaceMotion::non_affine
+                                       : coupling::InterfaceMotion::total;
+  hybrid.adaptive.distortion = prm.get_double("Adaptive zone distortion");
+  hybrid.adaptive.jacobian_ratio = prm.get_double("Adaptive zone corner Jacobian ratio");
   hybrid.adaptive.margin_cells = static_cast<unsigned int>(prm.get_integer("Adaptive zone margin"));
   hybrid.adaptive.reach = prm.get_double("Adaptive zone reach");
   hybrid.adaptive.check_interval =

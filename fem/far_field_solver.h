@@ -34,6 +34,32 @@ struct NodeRecord
   std::array<dealii::types::global_dof_index, 3> dofs; ///< x, y, z components
 };
 
+/// Bounds on how a far-field cell may move before the adaptive zone takes it (0: not checked).
+struct CellMotionLimits
+{
+  /// Largest departure of an interface cell's node from the cell's best-fit affine motion,
+  /// over the cell's size.
+  double non_affine = 0.0;
+  /// Largest ln(lambda_max / lambda_min) of the cell's best-fit affine stretch.
+  double deviatoric_stretch = 0.0;
+  /// Smallest corner Jacobian over the largest.
+  double jacobian_ratio = 0.0;
+};
+
+enum class CellMotionCause
+{
+  none,
+  distortion,
+  non_affine_motion
+};
+
+/// A far-field cell flagged by its motion: its reference centre and why.
+struct FlaggedCell
+{
+  dealii::Point<3> centre;
+  CellMotionCause cause = CellMotionCause::none;
+};
+
 /// Whole-mesh figures (summed over ranks; identical on every rank).
 struct FeDiagnostics
 {
@@ -232,6 +258,10 @@ public:
   /// the measure's factor, at most 1.16 times the exact value) over its limit and (fiber
   /// stretch - 1) / (limit - 1). Needs FeSceneParameters::track_failure_proximity.
   std::vector<dealii::Point<3>> cells_nearing_failure(double threshold) const;
+  /// Collective: the live cells (every rank's, on every rank) distorted beyond `limits`, and
+  /// the interface cells whose nodes leave the cell's best-fit affine motion by more than
+  /// limits.non_affine of its size (fem/cell_motion.h; fem/far_field_cell_motion.cc).
+  std::vector<FlaggedCell> cells_moving_unlike_elements(const CellMotionLimits& limits) const;
   /// Collective: material points for this rank's live cells whose centre lies inside
   /// [box_min, box_max]: points_per_axis^3 per cell at the midpoints of equal sub-cells (the MPM
   /// lattice), each with the fields interpolated there and the history of the Gauss point

@@ -283,6 +283,17 @@ bool rigid_bodies_touch(const GridUpdateSettings& s, const NodeBodyData* data,
   return gap_after_step(data[first], data[second], normal, closing, s.time_step) <=
          s.contact_distance;
 }
+/// The supports' share of a node's velocity change over a step, from v^n through the forces'
+/// trial to the supported end: the whole change of each stopped component, the forces' share
+/// included. The strain energy sees a stopped node at rest, so the kinetic energy the forces
+/// would have given it there is not the material's but the supports'.
+Vector3 stopped_change(const Grid& grid, const FaceConditions& faces, const std::int64_t key,
+                       const Vector3& start, const Vector3& trial, const Vector3& supported)
+{
+  Vector3 free_increment = trial - start;
+  apply_face_conditions(grid, faces, key, free_increment);
+  return supported - start - free_increment;
+}
 } // namespace
 
 void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fields,
@@ -357,7 +368,7 @@ void update_grid(const Grid& grid, const GridUpdateSettings& s, GridFields& fiel
         apply_face_conditions(grid, s.faces, key, data[b].mass, v_new[b],
                               owned ? impulse_local : impulse_elsewhere);
         if (change)
-          change[b] = v_new[b] - trial;
+          change[b] = stopped_change(grid, s.faces, key, v[b], trial, v_new[b]);
       }
   }
 #pragma omp critical
@@ -451,8 +462,9 @@ void resolve_contacts(const Grid& grid, const GridUpdateSettings& s, GridFields&
                                 owned ? impulse_local : impulse_elsewhere);
           // The face conditions are projections: what is left of the correction after them.
           apply_face_conditions(grid, s.faces, keys[node], change[b]);
-          if (held)
-            held[b] = v_new[b] - change[b] - trial; // the supports' share of the correction
+          if (held) // the supports' share of the correction
+            held[b] = stopped_change(grid, s.faces, keys[node], fields.velocity[node * n_bodies + b],
+                                     trial, v_new[b] - change[b]);
         }
     }
 #pragma omp critical

@@ -153,7 +153,10 @@ std::vector<std::string> HybridStepper::events()
       << c.cells << " far-field cells became " << c.points << " points (" << c.volume * 1e6
       << " cm^3); energy change " << c.energy_after - c.energy_before << " J of "
       << c.energy_before << " J, momentum change " << (c.momentum_after - c.momentum_before).norm()
-      << " kg m/s";
+      << " kg m/s; asked for by " << c.flagged[static_cast<int>(coupling::ZoneCause::failure)]
+      << " near failure, " << c.flagged[static_cast<int>(coupling::ZoneCause::interface_motion)]
+      << " by interface motion, " << c.flagged[static_cast<int>(coupling::ZoneCause::distortion)]
+      << " distorted";
     lines.push_back(o.str());
     if (conversions_logged + 1 == done.size() && solver.far_field_retired())
       lines.push_back("adaptive zone: the zone now holds the whole target; the far field has "
@@ -172,6 +175,14 @@ std::vector<double> HybridStepper::history_row() const
 
 namespace
 {
+/// What asked for the zone's growth, by cause name.
+nlohmann::json flagged_by_cause(const std::array<std::uint64_t, coupling::n_zone_causes>& flagged)
+{
+  return {{"failure", flagged[static_cast<int>(coupling::ZoneCause::failure)]},
+          {"interface_motion", flagged[static_cast<int>(coupling::ZoneCause::interface_motion)]},
+          {"distortion", flagged[static_cast<int>(coupling::ZoneCause::distortion)]}};
+}
+
 /// The far field's cells on its fixed and roller faces against the grid's cell. Collective.
 std::array<FaceResolution, 6> far_field_support_resolution(const coupling::HybridSolver& solver)
 {
@@ -359,8 +370,16 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                       {"mass_kg", c.mass},
                       {"energy_before_J", c.energy_before},
                       {"energy_change_J", c.energy_after - c.energy_before},
-                      {"momentum_change_kg_m_s", (c.momentum_after - c.momentum_before).norm()}});
+                      {"momentum_change_kg_m_s", (c.momentum_after - c.momentum_before).norm()},
+                      {"flagged_by_cause", flagged_by_cause(c.flagged)}});
+    std::array<std::uint64_t, coupling::n_zone_causes> flagged{};
+    for (const coupling::ZoneConversion& c : solver.conversions())
+      for (int k = 0; k < coupling::n_zone_causes; ++k)
+        flagged[k] += c.flagged[k];
     summary["hybrid"]["adaptive_zone"] = {{"conversions", list},
+                                          {"flagged_by_cause", flagged_by_cause(flagged)},
+                                          {"time_averaged_zone_fraction",
+                                           solver.time_averaged_zone_fraction()},
                                           {"converted_volume_m3", solver.converted_volume()},
                                           {"energy_change_J", solver.conversion_energy_change()},
                                           {"cells_beyond_reach", solver.cells_beyond_limit()},
