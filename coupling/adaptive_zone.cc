@@ -26,7 +26,7 @@ double energy_of_both(const mpm::SceneDiagnostics& m, const fem::FeDiagnostics& 
 }
 } // namespace
 
-std::pair<std::array<double, 3>, std::array<double, 3>> HybridSolver::zone_needed()
+HybridSolver::ZoneNeed HybridSolver::zone_needed()
 {
   const auto start = std::chrono::steady_clock::now();
   std::array<double, 3> lo = split.hybrid.zone_min, hi = split.hybrid.zone_max;
@@ -61,7 +61,7 @@ std::pair<std::array<double, 3>, std::array<double, 3>> HybridSolver::zone_neede
       places.emplace_back(cell.centre, cell.cause == fem::CellMotionCause::distortion
                                          ? ZoneCause::distortion
                                          : ZoneCause::interface_motion);
-  last_flagged.fill(0);
+  ZoneFlags flagged{};
   for (const auto& [c, cause] : places)
   {
     bool inside_limit = true;
@@ -73,7 +73,7 @@ std::pair<std::array<double, 3>, std::array<double, 3>> HybridSolver::zone_neede
       ++beyond;
       continue;
     }
-    ++last_flagged[static_cast<int>(cause)];
+    ++flagged[static_cast<int>(cause)];
     bool cut_by_limit = false;
     for (int d = 0; d < 3; ++d)
     {
@@ -103,11 +103,11 @@ std::pair<std::array<double, 3>, std::array<double, 3>> HybridSolver::zone_neede
   n_cells_beyond_limit = std::max(n_cells_beyond_limit, beyond);
   check_seconds +=
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return {lo, hi};
+  return {lo, hi, flagged};
 }
 
 void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
-                             const std::array<double, 3>& new_max)
+                             const std::array<double, 3>& new_max, const ZoneFlags& flagged)
 {
   const double h = split.mpm.cell_size;
   for (int d = 0; d < 3; ++d)
@@ -124,8 +124,7 @@ void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
   record.zone_max = new_max;
   record.energy_before = energy_of_both(mpm_solver->diagnostics(), fe_solver->diagnostics());
   record.momentum_before = total_momentum();
-  record.flagged = last_flagged;
-  last_flagged.fill(0);
+  record.flagged = flagged;
   const unsigned long long cells_before = fe_solver->n_active_cells();
 
   // The converted cells' material as points of the split body (each rank its own cells).

@@ -132,9 +132,9 @@ void HybridSolver::advance()
       book.mpm_steps >= last_zone_check + adaptive.check_interval)
   {
     last_zone_check = book.mpm_steps;
-    const auto [grown_min, grown_max] = zone_needed();
-    if (grown_min != split.hybrid.zone_min || grown_max != split.hybrid.zone_max)
-      grow_zone(grown_min, grown_max);
+    const ZoneNeed need = zone_needed();
+    if (need.min != split.hybrid.zone_min || need.max != split.hybrid.zone_max)
+      grow_zone(need.min, need.max, need.flagged);
   }
   if (adaptive.enabled && !window_open && !retired)
     retire_far_field_without_stiffness();

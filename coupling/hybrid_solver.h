@@ -55,6 +55,7 @@ enum class ZoneCause
   distortion
 };
 constexpr int n_zone_causes = 3;
+using ZoneFlags = std::array<std::uint64_t, n_zone_causes>;
 
 /// One growth of the adaptive zone.
 struct ZoneConversion
@@ -75,7 +76,7 @@ struct ZoneConversion
   double seconds = 0.0; ///< wall-clock time of the conversion
   /// Cells (or interface nodes) inside the limit that asked for it, by ZoneCause; all zero
   /// when the whole limit converts because the far field has no stiffness left.
-  std::array<std::uint64_t, n_zone_causes> flagged{{0, 0, 0}};
+  ZoneFlags flagged{{0, 0, 0}};
 };
 
 class HybridSolver : public mpm::InterfacePartner
@@ -178,7 +179,10 @@ public:
   /// the limit): the far-field cells inside become material points of the split body, the
   /// far field is rebuilt without them and takes over the rest of its state, and the
   /// interface moves to the new zone's surface. Call between steps at a window end.
-  void grow_zone(const std::array<double, 3>& new_min, const std::array<double, 3>& new_max);
+  /// `flagged`: what asked for it, by ZoneCause (none when the whole limit converts because
+  /// the far field has no stiffness left, or when a caller grows the zone by hand).
+  void grow_zone(const std::array<double, 3>& new_min, const std::array<double, 3>& new_max,
+                 const ZoneFlags& flagged = {});
   /// True once the zone holds the whole split body: the far field has no cell left (its
   /// supports' impulses and energies stay as they were) and the run goes on as pure MPM.
   bool far_field_retired() const { return retired; }
@@ -195,9 +199,15 @@ public:
                 std::vector<mpm::Vector3>& velocity_end) override;
 
 private:
-  /// Adaptive zone: the box the zone must grow to so that every far-field cell nearing
-  /// failure sits inside with the margin (the zone itself when none does). Collective.
-  std::pair<std::array<double, 3>, std::array<double, 3>> zone_needed();
+  /// The zone the far field's flagged cells need, and what each rule flagged inside the limit.
+  struct ZoneNeed
+  {
+    std::array<double, 3> min, max;
+    ZoneFlags flagged;
+  };
+  /// Adaptive zone: the box the zone must grow to so that every place a rule flags sits
+  /// inside with the margin (the zone itself when none does). Collective.
+  ZoneNeed zone_needed();
   /// Collective, at a window end: a far field with no cell that carries stress left (all
   /// failed) converts whole, when the limit reaches the body's faces (else throws a
   /// RunFailure-style error naming the remedy), and retires.
@@ -356,8 +366,6 @@ private:
   std::uint64_t n_cells_beyond_limit = 0;
   /// The zone the deck starts with (a restart builds it again before it converts).
   std::array<double, 3> start_zone_min{{0.0, 0.0, 0.0}}, start_zone_max{{0.0, 0.0, 0.0}};
-  /// What the last check flagged, by ZoneCause (the next conversion records it).
-  std::array<std::uint64_t, n_zone_causes> last_flagged{{0, 0, 0}};
   std::uint64_t last_zone_check = 0; ///< MPM step of the last check
   double check_seconds = 0.0;
   bool retired = false;

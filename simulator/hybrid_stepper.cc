@@ -176,7 +176,7 @@ std::vector<double> HybridStepper::history_row() const
 namespace
 {
 /// What asked for the zone's growth, by cause name.
-nlohmann::json flagged_by_cause(const std::array<std::uint64_t, coupling::n_zone_causes>& flagged)
+nlohmann::json flagged_by_cause(const coupling::ZoneFlags& flagged)
 {
   return {{"failure", flagged[static_cast<int>(coupling::ZoneCause::failure)]},
           {"interface_motion", flagged[static_cast<int>(coupling::ZoneCause::interface_motion)]},
@@ -372,7 +372,7 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                       {"energy_change_J", c.energy_after - c.energy_before},
                       {"momentum_change_kg_m_s", (c.momentum_after - c.momentum_before).norm()},
                       {"flagged_by_cause", flagged_by_cause(c.flagged)}});
-    std::array<std::uint64_t, coupling::n_zone_causes> flagged{};
+    coupling::ZoneFlags flagged{};
     for (const coupling::ZoneConversion& c : solver.conversions())
       for (int k = 0; k < coupling::n_zone_causes; ++k)
         flagged[k] += c.flagged[k];
