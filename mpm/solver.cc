@@ -320,7 +320,10 @@ void Solver::advance(const double cap)
                             "a smaller {cfl} (or {min_time_step}, when it lies above the scene's "
                             "stable step), or check the bulk modulus and the contact settings"});
   }
-  time_step = std::min({stable, parameters.end_time - current_time, cap});
+  const double to_reach = std::min(parameters.end_time - current_time, cap);
+  time_step = to_reach <= stable || std::isinf(cap)
+                ? std::min(stable, to_reach)
+                : to_reach / std::ceil(to_reach / stable * (1.0 - 1e-12));
   if (time_step <= 0.0)
     return;
   const double dt = time_step;
@@ -470,7 +473,8 @@ void Solver::advance(const double cap)
   for (std::size_t b = 0; b < particles.n_bodies(); ++b)
     if (grid_settings.body_is_rigid[b] && parameters.bodies[b].rigid_motion == RigidMotion::free)
     {
-      grid_settings.rigid_velocity[b] += dt * grid_result.contact_force[b] / body_mass[b];
+      if (body_mass[b] > 0.0)
+        grid_settings.rigid_velocity[b] += dt * grid_result.contact_force[b] / body_mass[b];
       if (static_cast<int>(b) == held)
         grid_settings.rigid_velocity[b] += dt * parameters.gravity;
       kinematics.rigid_velocity[b] = grid_settings.rigid_velocity[b];
@@ -627,6 +631,9 @@ void Solver::remove_points_outside_grid()
     n_leaving += leaves(particles.position[p]);
   // This step's outflow: count, energy, momentum; summed over the ranks.
   double outflow[5] = {static_cast<double>(n_leaving), 0, 0, 0, 0};
+  // A body's mass is that of its points on the grid: a rigid body half out of it answers the
+  // contact force with what is left, as the momentum its departed points took is frozen.
+  std::vector<double> mass_out(particles.n_bodies(), 0.0);
   if (n_leaving > 0)
   {
     std::vector<char> keep(particles.size(), 1);
@@ -639,6 +646,7 @@ void Solver::remove_points_outside_grid()
                           particles.reference_volume[p], particles.failure[p],
                           static_cast<std::uint32_t>(particles.body_of(p))});
       const double m = particles.mass[p];
+      mass_out[particles.body_of(p)] += m;
       outflow[1] += 0.5 * m * particles.velocity[p].squaredNorm() +
                     particles.reference_volume[p] *
                       (particles.energy_density[p] + particles.dissipated_density[p]);
@@ -648,6 +656,12 @@ void Solver::remove_points_outside_grid()
     particles.keep_only(keep);
   }
   ranks.sum(outflow, 5);
+  if (outflow[0] > 0.0)
+  {
+    ranks.sum(mass_out.data(), static_cast<int>(mass_out.size()));
+    for (std::size_t b = 0; b < mass_out.size(); ++b)
+      body_mass[b] = std::max(0.0, body_mass[b] - mass_out[b]);
+  }
   n_removed += static_cast<std::size_t>(outflow[0]);
   outflow_energy += outflow[1];
   const Vector3 momentum_out(outflow[2], outflow[3], outflow[4]);

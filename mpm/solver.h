@@ -102,7 +102,9 @@ public:
   /// dt = CFL h / max over deformable points of (wave speed + |v|), rigid bodies by |v| only.
   double stable_time_step() const;
 
-  /// Advances one step of size min(stable step, max step, time left, cap). Throws BlowUp.
+  /// Advances one step of size min(stable step, time left, cap). A finite cap longer than the
+  /// stable step (the rest of a coupling window) is split into equal steps, so that the window
+  /// never ends on a sliver of a step. Throws BlowUp.
   void advance(double cap = std::numeric_limits<double>::infinity());
 
   /// Shares grid nodes of one body with a partner solver (the coupling): every step the
@@ -328,7 +330,7 @@ private:
   KinematicsSettings kinematics;
   StressUpdateSettings stress_settings;
   StressUpdateResult stress_result;
-  std::vector<double> body_mass;
+  std::vector<double> body_mass; // of the points on the grid, on every rank
   std::vector<double> volumetric_rate;
   std::vector<double> peak_yield_ratio;
   std::vector<double> peak_point_speed;

@@ -14,7 +14,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'D', '0'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'D', '1'};
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -27,6 +27,7 @@ void Solver::save(std::ostream& out) const
   put_vector(out, grid_settings.rigid_velocity);
   put_vector(out, peak_yield_ratio);
   put_vector(out, peak_point_speed);
+  put_vector(out, body_mass); // of the points still on the grid
   // What the history reports of the last step: a run restored at its final step writes it.
   put_vector(out, grid_result.contact_force);
   put(out, static_cast<std::uint64_t>(grid_result.n_contact_nodes));
@@ -89,6 +90,8 @@ void Solver::restore(std::istream& in)
   get_vector(in, peak);
   std::vector<double> peak_speed;
   get_vector(in, peak_speed);
+  std::vector<double> mass_on_grid;
+  get_vector(in, mass_on_grid);
   std::vector<Vector3> contact_force;
   std::uint64_t contact_nodes = 0, active = 0;
   get_vector(in, contact_force);
@@ -150,7 +153,7 @@ void Solver::restore(std::istream& in)
                      loaded.body_begin.front() == 0 &&
                      std::is_sorted(loaded.body_begin.begin(), loaded.body_begin.end()) &&
                      rigid_velocity.size() == n_bodies && peak.size() == n_bodies &&
-                     peak_speed.size() == n_bodies;
+                     peak_speed.size() == n_bodies && mass_on_grid.size() == n_bodies;
   loaded.for_each_array([&](const auto& values) { sizes_agree = sizes_agree && values.size() == n; });
   if (!sizes_agree)
     throw std::runtime_error("checkpoint is inconsistent (array sizes differ)");
@@ -192,6 +195,7 @@ void Solver::restore(std::istream& in)
   accumulated_prescribed_work = prescribed_work;
   accumulated_added_momentum = added;
   n_removed = removed;
+  body_mass = mass_on_grid;
   outflow_energy = outflow;
   outflow_momentum = outflow_p;
   departed.clear();

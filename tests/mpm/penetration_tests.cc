@@ -236,6 +236,38 @@ double largest_energy_error_until_the_ball_stops(const mpm::SceneParameters& sce
   return largest_error;
 }
 
+// A rigid ball that leaves the grid's far face while the gel still pushes on it: the points
+// that left took their momentum with them, and the rest of the ball answers the contact force
+// with its own mass, so the momentum balance closes at every step of the exit.
+TEST(Penetration, ARigidBallLeavingTheGridInGelClosesItsMomentum)
+{
+  mpm::SceneParameters scene = test::rigid_ball_into_gel_slab();
+  scene.domain_max[1] = 6e-3;
+  scene.bodies[0].box_max[1] = 6e-3; // the gel reaches the far face
+  scene.remove_points_leaving_grid = true;
+  scene.end_time = 0.25e-3;
+  mpm::Solver solver(scene);
+  const Vector3 initial_momentum = solver.initial_momentum();
+  const auto ball_points = [&solver] {
+    return solver.points().end_of(1) - solver.points().begin_of(1);
+  };
+  std::size_t steps_while_leaving = 0;
+  while (!solver.finished())
+  {
+    const std::size_t ball_before = ball_points();
+    solver.advance();
+    Vector3 supplied = Vector3::Zero();
+    for (const Vector3& impulse : solver.support_impulses())
+      supplied += impulse;
+    const Vector3 balance =
+      solver.diagnostics().momentum - supplied + solver.removed_momentum() - initial_momentum;
+    EXPECT_LT(balance.norm(), 1e-9 * initial_momentum.norm()) << "t = " << solver.time();
+    if (ball_points() < ball_before && ball_points() > 0)
+      ++steps_while_leaving;
+  }
+  EXPECT_GE(steps_while_leaving, 3u) << "the ball did not leave the grid over several steps";
+}
+
 TEST(Penetration, ABallStopsInGelatinWithItsMomentumAndEnergyAccountedFor)
 {
   double depth = 0.0;

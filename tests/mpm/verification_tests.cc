@@ -12,9 +12,36 @@
 
 #include <cmath>
 #include <map>
+#include <vector>
 
 using namespace vulnus;
 using mpm::Vector3;
+
+// A coupling window of 2.01 stable steps is crossed in three equal steps, not two full steps
+// and a sliver of a hundredth (the sliver costs a whole step and ends the window on noise).
+TEST(MpmVerification, AWindowLongerThanTheStableStepIsSplitEvenly)
+{
+  mpm::SceneParameters scene = test::empty_scene(Vector3::Zero(), Vector3(10e-3, 10e-3, 10e-3), 1e-3);
+  scene.materials.push_back(test::elastic_material("gel", 1e5, 1e4));
+  scene.bodies.push_back(test::box_body("cube", "gel", Vector3(3e-3, 3e-3, 3e-3),
+                                        Vector3(6e-3, 6e-3, 6e-3), 1000.0, 2));
+  mpm::Solver solver(scene);
+  const double stable = solver.stable_time_step();
+  const double window_end = 2.01 * stable;
+  std::vector<double> steps;
+  while (solver.time() < window_end * (1.0 - 1e-12))
+  {
+    solver.advance(window_end - solver.time());
+    steps.push_back(solver.last_time_step());
+  }
+  ASSERT_EQ(steps.size(), 3u);
+  for (const double dt : steps)
+    EXPECT_NEAR(dt, window_end / 3.0, 1e-9 * stable);
+  EXPECT_NEAR(solver.time(), window_end, 1e-12 * window_end);
+  // Without a cap the step is the stable step.
+  solver.advance();
+  EXPECT_NEAR(solver.last_time_step(), solver.stable_time_step(), 0.05 * stable);
+}
 
 TEST(MpmVerification, FreeBodyTranslatesExactly)
 {
