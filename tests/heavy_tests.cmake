@@ -15,6 +15,11 @@ set(vulnus_heavy_tests
   HybridWindowsProbed.ProbedEffectiveMassMatchesTheExactOneAndBalancesAlike
   HybridWindowsRestart.ALongDashpotWindowSavedMidWayContinuesBitForBit
   AdaptiveZoneImplicit.ConvertedCellsLeaveANewmarkFarFieldThatKeepsTheMotion
+  # the loaded interface's longest windows and the generalized-alpha restart (the shorter
+  # Newmark windows, generalized alpha's and the Newmark restart stay in the everyday suite)
+  Windows/HybridWindows.ExchangeMomentumExactlyOnALoadedInterface/newmark_50_shortened
+  Windows/HybridWindows.ExchangeMomentumExactlyOnALoadedInterface/dashpot_500
+  Integrators/HybridRestart.RestartedRunContinuesBitForBit/generalized_alpha
   # whole hybrid scenes
   HybridPaperScene.MatchesThePureMpmReferenceWithinFivePercent
   HybridPaperScene.AWoundReachingTheFarFieldStopsTheRunOrIsFlagged
