@@ -629,11 +629,9 @@ void Solver::remove_points_outside_grid()
 #pragma omp parallel for schedule(static) reduction(+ : n_leaving)
   for (long p = 0; p < n; ++p)
     n_leaving += leaves(particles.position[p]);
-  // This step's outflow: count, energy, momentum; summed over the ranks.
-  double outflow[5] = {static_cast<double>(n_leaving), 0, 0, 0, 0};
-  // A body's mass is that of its points on the grid: a rigid body half out of it answers the
-  // contact force with what is left, as the momentum its departed points took is frozen.
-  std::vector<double> mass_out(particles.n_bodies(), 0.0);
+  // This step's outflow: count, energy, momentum, then each body's mass; summed over the ranks.
+  std::vector<double> outflow(5 + particles.n_bodies(), 0.0);
+  outflow[0] = static_cast<double>(n_leaving);
   if (n_leaving > 0)
   {
     std::vector<char> keep(particles.size(), 1);
@@ -642,11 +640,12 @@ void Solver::remove_points_outside_grid()
       if (!leaves(particles.position[p]))
         continue;
       keep[p] = 0;
+      const std::size_t b = particles.body_of(p);
       departed.push_back({particles.reference_position[p].cast<double>(),
                           particles.reference_volume[p], particles.failure[p],
-                          static_cast<std::uint32_t>(particles.body_of(p))});
+                          static_cast<std::uint32_t>(b)});
       const double m = particles.mass[p];
-      mass_out[particles.body_of(p)] += m;
+      outflow[5 + b] += m;
       outflow[1] += 0.5 * m * particles.velocity[p].squaredNorm() +
                     particles.reference_volume[p] *
                       (particles.energy_density[p] + particles.dissipated_density[p]);
@@ -655,13 +654,11 @@ void Solver::remove_points_outside_grid()
     }
     particles.keep_only(keep);
   }
-  ranks.sum(outflow, 5);
-  if (outflow[0] > 0.0)
-  {
-    ranks.sum(mass_out.data(), static_cast<int>(mass_out.size()));
-    for (std::size_t b = 0; b < mass_out.size(); ++b)
-      body_mass[b] = std::max(0.0, body_mass[b] - mass_out[b]);
-  }
+  ranks.sum(outflow.data(), static_cast<int>(outflow.size()));
+  // A body's mass is that of its points on the grid: a rigid body half out of it answers the
+  // contact force with what is left, as the momentum its departed points took is frozen.
+  for (std::size_t b = 0; b < body_mass.size(); ++b)
+    body_mass[b] = std::max(0.0, body_mass[b] - outflow[5 + b]);
   n_removed += static_cast<std::size_t>(outflow[0]);
   outflow_energy += outflow[1];
   const Vector3 momentum_out(outflow[2], outflow[3], outflow[4]);
