@@ -147,11 +147,13 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
     totals.wall_seconds > 0 ? double(sample.n_points) * solver.step_count() / totals.wall_seconds : 0.0;
   j["failed"] = {{"matrix", wound.counts[1]}, {"fiber", wound.counts[2]}, {"total", wound.counts[3]}};
   j["failed_volume_m3"] = {{"matrix", wound.volumes[1]}, {"fiber", wound.volumes[2]}, {"total", wound.volumes[3]}};
+  j["debris"] = {{"count", wound.debris_count}, {"volume_m3", wound.debris_volume}};
   j["entrance_wound"] = face_json(wound.entrance);
   j["exit_wound"] = face_json(wound.exit);
   j["wound_face_layer_m"] = wound.face_layer;
   j["tract"] = {{"depth_m", wound.tract_depth},
                 {"area_m2", wound.tract_area},
+                {"debris_area_m2", wound.debris_tract_area},
                 {"path_length_m", wound.path.length()},
                 {"direction", {axis[0], axis[1], axis[2]}}};
 

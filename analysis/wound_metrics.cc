@@ -1,5 +1,5 @@
-// Wound metrics from failed points: volumes, the wounds of the faces the path crosses, the
-// tract profile along the path.
+// Wound metrics from failed points: volumes (by flag and of debris), the wounds of the faces
+// the path crosses, the tract profiles along the path.
 #include "analysis/wound_metrics.h"
 
 #include <Eigen/Eigenvalues>
@@ -15,8 +15,22 @@ const char* box_face_name(const int face)
   return face >= 0 && face < 6 ? names[face] : "none";
 }
 
+bool carries_no_deviatoric_stress(const Eigen::Matrix<double, 6, 1>& stress)
+{
+  const double mean = (stress[0] + stress[1] + stress[2]) / 3.0;
+  Eigen::Matrix<double, 6, 1> deviator = stress;
+  for (int i = 0; i < 3; ++i)
+    deviator[i] -= mean;
+  // Shear entries count twice in the norm of the full tensor.
+  const double dev2 = deviator.head<3>().squaredNorm() + 2.0 * deviator.tail<3>().squaredNorm();
+  const double all2 = stress.head<3>().squaredNorm() + 2.0 * stress.tail<3>().squaredNorm();
+  return dev2 <= 1e-20 * all2;
+}
+
 namespace
 {
+bool totally_failed(const std::uint8_t flag) { return (flag & 3u) == 3u; }
+
 /// Totally failed points within `layer` inside `face` of the box.
 FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& volume,
                      const std::vector<std::uint8_t>& flags, const WoundGeometry& g, const int face,
@@ -30,7 +44,7 @@ FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& v
   const double inward = lower_face ? 1.0 : -1.0;
   auto in_layer = [&](const std::size_t p) {
     const double depth = inward * (x[p][axis_index] - plane);
-    return flags[p] == 3 && depth >= 0.0 && depth <= layer;
+    return totally_failed(flags[p]) && depth >= 0.0 && depth <= layer;
   };
   double total = 0.0;
   Vector3 mean = Vector3::Zero();
@@ -76,6 +90,11 @@ WoundMetrics compute_wound_metrics(const std::vector<Vector3>& x, const std::vec
     const unsigned flag = flags[p] & 3u;
     ++m.counts[flag];
     m.volumes[flag] += volume[p];
+    if (flags[p] & debris_bit)
+    {
+      ++m.debris_count;
+      m.debris_volume += volume[p];
+    }
   }
   m.path = path_through_box(g.box_lower, g.box_upper, g.path_origin, g.path_direction);
   if (!m.path.hits)
@@ -90,17 +109,23 @@ WoundMetrics compute_wound_metrics(const std::vector<Vector3>& x, const std::vec
     std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(m.path.length() / h - 1e-9)));
   m.tract_depth.resize(n_slices);
   m.tract_area.assign(n_slices, 0.0);
+  m.debris_tract_area.assign(n_slices, 0.0);
   for (std::size_t s = 0; s < n_slices; ++s)
     m.tract_depth[s] = (s + 0.5) * h;
   const Vector3 entry = g.path_origin + m.path.t_in * g.path_direction;
   for (std::size_t p = 0; p < x.size(); ++p)
   {
-    if (flags[p] != 3)
+    const bool debris = flags[p] & debris_bit;
+    if (!totally_failed(flags[p]) && !debris)
       continue;
     const double depth = (x[p] - entry).dot(g.path_direction);
     if (depth < 0.0 || depth >= n_slices * h)
       continue;
-    m.tract_area[static_cast<std::size_t>(depth / h)] += volume[p] / h;
+    const std::size_t slice = static_cast<std::size_t>(depth / h);
+    if (totally_failed(flags[p]))
+      m.tract_area[slice] += volume[p] / h;
+    if (debris)
+      m.debris_tract_area[slice] += volume[p] / h;
   }
   return m;
 }

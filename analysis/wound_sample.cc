@@ -65,10 +65,13 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
         sample.intact_volume += p.reference_volume[i];
       }
       else
-        append_record(failed, X, p.reference_volume[i], flag);
+        append_record(failed, X, p.reference_volume[i],
+                      carries_no_deviatoric_stress(p.stress[i])
+                        ? static_cast<std::uint8_t>(flag | debris_bit) : flag);
     }
   }
-  // Target points that left the grid keep their place in the wound.
+  // Target points that left the grid keep their place in the wound; a failed one carries no
+  // stress any more, so it is debris.
   for (const mpm::DepartedPoint& d : solver.departed_points())
   {
     if (static_cast<int>(d.body) == projectile)
@@ -84,7 +87,8 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
       sample.intact_volume += d.reference_volume;
     }
     else
-      append_record(failed, d.reference_position, d.reference_volume, d.failure);
+      append_record(failed, d.reference_position, d.reference_volume,
+                    static_cast<std::uint8_t>(d.failure | debris_bit));
   }
   const mpm::RankGroup& ranks = solver.rank_group();
   double extremes[6] = {-lower[0], -lower[1], -lower[2], upper[0], upper[1], upper[2]};

@@ -15,7 +15,7 @@ struct WoundSample
 {
   std::vector<mpm::Vector3> failed_position; ///< reference positions of failed target points
   std::vector<double> failed_volume;         ///< their reference volumes, m^3
-  std::vector<std::uint8_t> failed_flag;     ///< their failure flags (1, 2, 3)
+  std::vector<std::uint8_t> failed_flag;     ///< their failure flags (1, 2, 3), with debris_bit
   std::uint64_t n_intact = 0;                ///< intact target points
   double intact_volume = 0.0;                ///< m^3
   mpm::Vector3 target_lower = mpm::Vector3::Zero(); ///< the target's reference extent, m

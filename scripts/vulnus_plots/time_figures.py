@@ -13,7 +13,8 @@ FAILED_COLUMNS = [("failed_matrix", 1), ("failed_fiber", 2), ("failed_total", 3)
 
 
 def plot_tract(summary, path):
-    """Total-failure area and its equivalent diameter against depth below the entrance.
+    """Total-failure area (and the debris area, where the summary has it) and the total's
+    equivalent diameter against depth below the entrance.
     Returns False (and says why) when summary.json has no tract."""
     tract = (summary or {}).get("tract") or {}
     depth, area = np.asarray(tract.get("depth_m", []), float), np.asarray(tract.get("area_m2", []), float)
@@ -22,9 +23,13 @@ def plot_tract(summary, path):
         return False
     fig, axes = style.figure(1, 1, width=6.0, height=4.0)
     axis = axes[0][0]
-    axis.plot(1e3 * depth, 1e6 * area, "o-", color=style.FLAG_COLOURS[3])
+    axis.plot(1e3 * depth, 1e6 * area, "o-", color=style.FLAG_COLOURS[3], label="total failure")
+    debris = np.asarray(tract.get("debris_area_m2", []), float)
+    if debris.size == depth.size:
+        axis.plot(1e3 * depth, 1e6 * debris, "^:", color="0.4", label="debris (no deviatoric stress)")
+        axis.legend(loc="lower right", fontsize=8)
     axis.set_xlabel("depth below the entrance face [mm]")
-    axis.set_ylabel("total-failure area [mm$^2$]", color=style.FLAG_COLOURS[3])
+    axis.set_ylabel("failed area [mm$^2$]", color=style.FLAG_COLOURS[3])
     axis.set_ylim(bottom=0)
     twin = axis.twinx()
     twin.plot(1e3 * depth, 1e3 * np.sqrt(4 * area / np.pi), "s--", color="k", ms=3)

@@ -240,3 +240,50 @@ TEST(WoundMetrics, FaceLayerOfFixedDepthMeasuresTheSameWoundOnEveryGrid)
   EXPECT_NEAR(one_cell_fine.area, slot_and_caps, 0.03 * slot_and_caps);
   EXPECT_NEAR(fixed_coarse.area, 0.5 * (slot_and_caps + tract), 0.03 * slot_and_caps);
 }
+
+TEST(WoundMetrics, DebrisIsEveryFailedPointWithoutDeviatoricStressWhateverItsFlag)
+{
+  // A totally failed core of radius 3 mm in a matrix-failed ring out to 5 mm; the ring's
+  // points at x > 0 carry no deviatoric stress (their fibres are not stretched).
+  const double core = 3e-3, ring = 5e-3, s = 0.25e-3;
+  const PointSet set = slab(s, [&](const Vector3& p) {
+    const double r2 = p[0] * p[0] + p[2] * p[2];
+    if (r2 < core * core)
+      return std::uint8_t(3 | debris_bit);
+    if (r2 < ring * ring)
+      return std::uint8_t(p[0] > 0.0 ? 1 | debris_bit : 1);
+    return std::uint8_t(0);
+  });
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, normal_shot());
+  const double core_area = M_PI * core * core;
+  const double debris_area = core_area + 0.5 * M_PI * (ring * ring - core * core);
+  EXPECT_NEAR(m.volumes[3], core_area * 10e-3, 0.03 * core_area * 10e-3);
+  EXPECT_NEAR(m.volumes[1], 2.0 * (debris_area - core_area) * 10e-3,
+              0.03 * (debris_area - core_area) * 10e-3);
+  EXPECT_NEAR(m.debris_volume, debris_area * 10e-3, 0.03 * debris_area * 10e-3);
+  // Half the ring's points, to the few the float lattice puts on either side of x = 0.
+  EXPECT_NEAR(double(m.debris_count), m.counts[3] + 0.5 * m.counts[1], 0.01 * m.counts[1]);
+  ASSERT_EQ(m.debris_tract_area.size(), 10u);
+  for (std::size_t k = 0; k < 10; ++k)
+  {
+    EXPECT_NEAR(m.tract_area[k], core_area, 0.03 * core_area) << "slice " << k;
+    EXPECT_NEAR(m.debris_tract_area[k], debris_area, 0.03 * debris_area) << "slice " << k;
+  }
+  // The face wounds stay those of the total flag.
+  EXPECT_NEAR(m.entrance.equivalent_diameter, 2 * core, 0.02 * 2 * core);
+}
+
+TEST(WoundMetrics, DebrisMeansNoDeviatoricStressToRounding)
+{
+  Eigen::Matrix<double, 6, 1> stress;
+  stress << -3e5, -3e5, -3e5, 0, 0, 0; // pressure alone
+  EXPECT_TRUE(carries_no_deviatoric_stress(stress));
+  stress << -1.0 / 3.0, -1.0 / 3.0, -1.0 / 3.0, 0, 0, 0; // not exact in binary
+  EXPECT_TRUE(carries_no_deviatoric_stress(stress));
+  EXPECT_TRUE(carries_no_deviatoric_stress(Eigen::Matrix<double, 6, 1>::Zero()));
+  // A fibre tension of a millionth of the pressure along x, then a shear of that size.
+  stress << -3e5 + 0.3, -3e5, -3e5, 0, 0, 0;
+  EXPECT_FALSE(carries_no_deviatoric_stress(stress));
+  stress << -3e5, -3e5, -3e5, 0, 0.3, 0;
+  EXPECT_FALSE(carries_no_deviatoric_stress(stress));
+}
