@@ -46,7 +46,7 @@ void declare_grid_section(EntryTable& table)
                 "Stress update: USL (update stress last) or MUSL (modified USL, velocities "
                 "re-mapped to the grid before the stress update).");
   table.declare("Velocity transfer", "FLIP",
-                Patterns::Selection("relaxed PIC|relaxed APIC|APIC|FLIP|PIC"),
+                Patterns::Selection("relaxed PIC|relaxed APIC|APIC|FLIP|PIC|XPIC"),
                 "How points take their velocity from the grid: relaxed PIC (FLIP increments "
                 "relaxed towards the PIC velocity over the time in Velocity relaxation, a rate "
                 "fixed in time so the answer does not depend on the step count; hybrid runs "
@@ -54,8 +54,14 @@ void declare_grid_section(EntryTable& table)
                 "towards APIC), APIC (affine particle-in-cell, "
                 "Jiang et al. 2015: PIC plus the velocity gradient at the point, which keeps "
                 "rotation and shear without FLIP's noise), FLIP (velocity increments; no "
-                "damping, overshoots where contact changes a node's velocity) or PIC (damps "
-                "every mode the grid cannot hold).");
+                "damping, overshoots where contact changes a node's velocity), PIC (damps "
+                "every mode the grid cannot hold) or XPIC (Hammerquist and Nairn 2017: PIC plus "
+                "the part of the points' velocities that a grid field fits, from XPIC order "
+                "terms of a series, so a rigid rotation or any motion the grid resolves passes "
+                "undamped while FLIP's noise is removed; pure MPM only).");
+  table.declare("XPIC order", "5", Patterns::Integer(1, 20),
+                "XPIC: the number m of terms of its series (1 is PIC; each further term is one "
+                "more pass over the points) [-].");
   table.declare("Velocity relaxation", "1", Patterns::Double(1e-3, 1e3),
                 "relaxed PIC and APIC: relaxation time tau of the FLIP part in Courant times h / max(c + "
                 "|v|) (the step at CFL 1) [-]; the FLIP fraction per step is exp(-dt / tau).");
@@ -114,9 +120,11 @@ void parse_grid_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   scene.velocity_transfer = transfer == "FLIP"   ? mpm::VelocityTransfer::flip
                             : transfer == "PIC"  ? mpm::VelocityTransfer::pic
                             : transfer == "APIC" ? mpm::VelocityTransfer::apic
+                            : transfer == "XPIC" ? mpm::VelocityTransfer::xpic
                             : transfer == "relaxed PIC" ? mpm::VelocityTransfer::relaxed_pic
                                                  : mpm::VelocityTransfer::relaxed_apic;
   scene.velocity_relaxation = prm.get_double("Velocity relaxation");
+  scene.xpic_order = static_cast<int>(prm.get_integer("XPIC order"));
   scene.projectile_velocity_relaxation = prm.get_double("Projectile velocity relaxation");
   scene.deformation_update = prm.get("Deformation update") == "forward Euler"
                                  ? mpm::DeformationUpdate::forward_euler

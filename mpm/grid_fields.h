@@ -50,6 +50,9 @@ struct GridFields
   /// (zero off the fixed and roller faces), sized when a face is not free. The points' velocity
   /// update weighs it to book the kinetic energy the supports took from them.
   std::vector<Vector3> support_change;
+  /// XPIC(m) (mpm/xpic.h): v*_m - v^n per node and body, which the points' velocity update adds
+  /// to the PIC velocity; empty under the other transfers.
+  std::vector<Vector3> xpic_correction;
 
   /// Sizes the arrays; data is not cleared (the scatter clears it in parallel).
   void resize(std::size_t n_active_nodes)

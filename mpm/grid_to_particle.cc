@@ -13,7 +13,8 @@ namespace vulnus::mpm
 namespace
 {
 /// Velocity update of the points of one share of one deformable body: the FLIP/PIC blend
-/// v = a (v_p + sum w (v_i^(n+1) - v_i^n)) + (1 - a) sum w v_i^(n+1). With Project (MUSL),
+/// v = a (v_p + sum w (v_i^(n+1) - v_i^n)) + (1 - a) sum w v_i^(n+1), XPIC's correction
+/// (`xpic`, when not null) added to the PIC part. With Project (MUSL),
 /// each point's new momentum goes back to the nodes it read from, with the same weights. With
 /// Book, returns the kinetic energy the contact corrections (`contact`, when not null) and the
 /// supports (`supports`, when not null) took from the points (see update_point_kinematics).
@@ -22,7 +23,8 @@ CorrectionLoss update_share_velocities(const Grid& grid, const double lp, const 
                                        const std::size_t b, const ShareRange range,
                                        const GridFields& fields, Particles& particles,
                                        Vector3* momentum, Vector3* contested,
-                                       const Vector3* contact, const Vector3* supports)
+                                       const Vector3* contact, const Vector3* supports,
+                                       const Vector3* xpic)
 {
   constexpr int n_entries = stencil_entries(shape);
   const std::size_t n_bodies = particles.n_bodies();
@@ -42,6 +44,8 @@ CorrectionLoss update_share_velocities(const Grid& grid, const double lp, const 
                            const std::int32_t slot = grid.slot(key);
                            const std::size_t e = slot * n_bodies + b;
                            v_pic += w * fields.velocity_new[e];
+                           if (xpic)
+                             v_pic += w * xpic[e];
                            dv += w * (fields.velocity_new[e] - fields.velocity[e]);
                            if constexpr (book)
                            {
@@ -98,6 +102,7 @@ CorrectionLoss update_point_kinematics(const Grid& grid, const TransferSettings&
   const bool book = book_contact || book_supports;
   const Vector3* contact = book_contact ? fields.contact_change.data() : nullptr;
   const Vector3* supports = book_supports ? fields.support_change.data() : nullptr;
+  const Vector3* xpic = fields.xpic_correction.empty() ? nullptr : fields.xpic_correction.data();
   // Per share and body, summed in that order afterwards: the same total on every run.
   std::vector<CorrectionLoss> losses(book ? grid.n_point_shares() * n_bodies : 0);
   with_shape(
@@ -121,18 +126,18 @@ CorrectionLoss update_point_kinematics(const Grid& grid, const TransferSettings&
             losses[share * n_bodies + b] =
               momentum ? update_share_velocities<shape, true, true>(
                            grid, lp, flip, b, range, fields, particles, momentum, contested,
-                           contact, supports)
+                           contact, supports, xpic)
                        : update_share_velocities<shape, false, true>(
                            grid, lp, flip, b, range, fields, particles, nullptr, nullptr,
-                           contact, supports);
+                           contact, supports, xpic);
           else if (momentum)
             update_share_velocities<shape, true, false>(grid, lp, flip, b, range, fields,
                                                         particles, momentum, contested,
-                                                        nullptr, nullptr);
+                                                        nullptr, nullptr, xpic);
           else
             update_share_velocities<shape, false, false>(grid, lp, flip, b, range, fields,
                                                          particles, nullptr, nullptr,
-                                                         nullptr, nullptr);
+                                                         nullptr, nullptr, xpic);
         };
         if (projection)
         {

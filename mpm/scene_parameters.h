@@ -38,7 +38,10 @@ enum class VelocityTransfer
   relaxed_pic,
   apic, ///< v_p = sum w v_i, plus the affine part C_p = grad v at the point for the scatter
   flip, ///< v_p += sum w (v_i^(n+1) - v_i^n): no damping, overshoots where nodes jump
-  pic   ///< v_p = sum w v_i: damps every mode the grid cannot hold, including rotation
+  pic,  ///< v_p = sum w v_i: damps every mode the grid cannot hold, including rotation
+  /// XPIC(m) (mpm/xpic.h): PIC plus the part of the points' velocities a grid field fits,
+  /// from m terms of a series; removes FLIP's noise without PIC's damping of resolved motion
+  xpic
 };
 
 /// How the deformation gradient follows the velocity gradient L over one step.
@@ -91,6 +94,9 @@ struct SceneParameters : scene::SceneDescription
   VelocityTransfer velocity_transfer = VelocityTransfer::flip;
   /// relaxed_apic: tau in units of the Courant time h / max(c + |v|) (the CFL-1 step).
   double velocity_relaxation = 1.0;
+  /// XPIC: the number m of the series' terms (1 is PIC; each further term is one more pass
+  /// over the points).
+  int xpic_order = 5;
   /// A deformable projectile's points relax their FLIP velocity towards PIC over this many of
   /// the projectile's own Courant times h / max(c + |v|) (0: it uses velocity_transfer). A
   /// stiff projectile rings at its own grid-scale frequency after each contact impulse; FLIP

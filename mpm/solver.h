@@ -311,6 +311,8 @@ private:
   void reduce_contact_result();
   /// Axisymmetric: the step's contact forces and supports' impulses of the revolved scene.
   void revolve_step_results();
+  /// XPIC(m): fields.xpic_correction = v*_m - v^n for the points' velocity update (mpm/xpic.h).
+  void compute_xpic_correction();
   void remove_points_outside_grid();
   std::string describe_point(std::size_t p) const;
 
@@ -328,6 +330,7 @@ private:
   GridUpdateSettings grid_settings;
   GridUpdateResult grid_result;
   KinematicsSettings kinematics;
+  std::vector<Vector3> xpic_term; ///< XPIC(m): the series' current term per node and body
   StressUpdateSettings stress_settings;
   StressUpdateResult stress_result;
   std::vector<double> body_mass; // of the points on the grid, on every rank

@@ -21,6 +21,7 @@ void Solver::share_nodes(const SharedNodes& nodes)
   // points; a blend with PIC would give them m v_end - p instead. Coupled runs use FLIP.
   kinematics.flip_fraction = 1.0;
   kinematics.affine = transfer.affine = false;
+  parameters.velocity_transfer = VelocityTransfer::flip; // no XPIC passes for a FLIP update
   const std::size_t n = nodes.keys.size();
   shared_state.mass.assign(n, 0.0);
   shared_state.force.assign(n, Vector3::Zero());

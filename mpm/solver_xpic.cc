@@ -1,0 +1,22 @@
+// The solver's XPIC(m) step: the series v*_m - v^n on the grid, summed over ranks after each
+// pass over the points (mpm/xpic.h).
+#include "mpm/solver.h"
+#include "mpm/xpic.h"
+
+namespace vulnus::mpm
+{
+void Solver::compute_xpic_correction()
+{
+  // The MUSL projection's buffers are free until the points' update: each pass uses them.
+  fields.xpic_correction.assign(fields.velocity.size(), Vector3::Zero());
+  first_xpic_term(grid, grid_settings, fields, xpic_term);
+  for (int k = 1; k < parameters.xpic_order; ++k)
+  {
+    scatter_point_values(grid, transfer, kinematics, particles, xpic_term,
+                         fields.projected_momentum, buffers.momentum_per_share);
+    sum_projected_momenta_with_neighbours();
+    next_xpic_term(grid, grid_settings, fields, fields.projected_momentum, xpic_term,
+                   fields.xpic_correction);
+  }
+}
+} // namespace vulnus::mpm
