@@ -57,6 +57,17 @@ std::string support_condition(const mpm::Solver& solver, const int face,
 
 /// A wound of fewer than three points has no shape: aspect ratio and axis are null. A face
 /// the path does not cross (or an exit the projectile did not make) has no wound: null.
+nlohmann::json outline_json(const FaceOutline& o)
+{
+  if (!o.measured)
+    return nlohmann::json();
+  return {{"grid_spacing_m", o.grid_spacing},
+          {"area_m2", o.area},
+          {"equivalent_diameter_m", o.equivalent_diameter},
+          {"aspect_ratio", o.aspect_ratio},
+          {"major_axis_direction", {o.major_axis[0], o.major_axis[1], o.major_axis[2]}}};
+}
+
 nlohmann::json face_json(const FaceWound& w)
 {
   if (w.face < 0)
@@ -69,7 +80,8 @@ nlohmann::json face_json(const FaceWound& w)
            has_shape ? nlohmann::json{w.major_axis[0], w.major_axis[1], w.major_axis[2]}
                      : nlohmann::json()},
           {"failed_points", w.n_points},
-          {"area_m2", w.area}};
+          {"area_m2", w.area},
+          {"outline", outline_json(w.outline)}};
 }
 /// How deep the projectile went: its nose below the target's entrance plane (the plane of the
 /// target's nearest points at the start), the deepest it reached and when, whether it stopped
@@ -131,7 +143,8 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
 {
   const mpm::Vector3 axis = solver.flight_direction();
   const int projectile = solver.projectile();
-  const WoundMetrics wound = wound_metrics_of(sample, solver, totals.wound_face_layer);
+  const WoundMetrics wound = wound_metrics_of(sample, solver, totals.wound_face_layer,
+                                              totals.wound_outline_grid);
 
   nlohmann::json j;
   j["completed"] = totals.completed;

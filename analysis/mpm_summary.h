@@ -26,6 +26,8 @@ struct RunTotals
   /// Output/Wound face layer: the depth the entrance and exit wounds are measured in, m (0: one
   /// cell).
   double wound_face_layer = 0.0;
+  /// Output/Wound outline grid: the face planes' grid spacing of the wound outline, m (0: none).
+  double wound_outline_grid = 0.0;
 };
 
 /// Total energy accounted for (J): kinetic + strain + potential + dissipated in the materials,

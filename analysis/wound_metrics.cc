@@ -42,6 +42,8 @@ FaceWound face_wound(const std::vector<Vector3>& x, const std::vector<double>& v
   const bool lower_face = face % 2 == 0;
   const double plane = lower_face ? g.box_lower[axis_index] : g.box_upper[axis_index];
   const double inward = lower_face ? 1.0 : -1.0;
+  if (g.outline_spacing > 0.0 && !g.rings_about_path)
+    w.outline = face_outline(x, volume, flags, debris_bit, face, plane, layer, g.outline_spacing);
   auto in_layer = [&](const std::size_t p) {
     const double depth = inward * (x[p][axis_index] - plane);
     return totally_failed(flags[p]) && depth >= 0.0 && depth <= layer;

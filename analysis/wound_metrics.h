@@ -11,10 +11,13 @@
 //    face plane; failed area A = (their volume) / (cell size); equivalent diameter
 //    sqrt(4 A / pi); aspect ratio sqrt(l1 / l2) of the principal second moments l1 >= l2 of
 //    their positions in the face plane (volume-weighted), and the major axis direction;
+//  - the outline of each face wound: the layer's debris smoothed onto a grid of fixed spacing
+//    in the face plane, where it reaches one half (analysis/wound_outline.h);
 //  - the tract: area of the total-failure (and of the debris) cross-section in slices one cell
 //    thick normal to the path, against the distance along the path from the entrance point.
 #pragma once
 
+#include "analysis/wound_outline.h"
 #include "mpm/target_path.h"
 
 #include <Eigen/Core>
@@ -46,6 +49,7 @@ struct FaceWound
   double equivalent_diameter = 0.0;   ///< m
   double aspect_ratio = 1.0;          ///< >= 1; 1 for a circle (and when fewer than 3 points)
   Vector3 major_axis = Vector3::Zero(); ///< unit, in the face plane
+  FaceOutline outline; ///< the layer's debris smoothed on a fixed grid (not for rings)
 };
 
 using mpm::path_through_box;
@@ -65,6 +69,8 @@ struct WoundGeometry
   /// The points are rings about the path (an axisymmetric scene): a face wound is round, its
   /// aspect ratio 1 and it has no major axis.
   bool rings_about_path = false;
+  /// Spacing of the face planes' grid of the wounds' outlines, m (0: none).
+  double outline_spacing = 0.0;
 };
 
 struct WoundMetrics

@@ -150,7 +150,7 @@ double face_layer_in_rows(const WoundSample& sample, const double cell_size,
 } // namespace
 
 WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solver,
-                              const double face_layer)
+                              const double face_layer, const double outline_grid)
 {
   if (!sample.has_target)
   {
@@ -166,6 +166,7 @@ WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solv
   geometry.cell_size = solver.scene().cell_size;
   geometry.rings_about_path = solver.scene().axisymmetric;
   geometry.face_layer = face_layer_in_rows(sample, geometry.cell_size, face_layer);
+  geometry.outline_spacing = outline_grid;
   // A scene without a projectile (a wave test) measures along the flight axis through its
   // middle; an exit wound needs a projectile that left.
   if (solver.projectile() < 0)

@@ -38,7 +38,8 @@ bool left_through_exit_face(const WoundSample& sample, const mpm::Solver& solver
 /// left through the exit face. The entrance and exit wounds are measured in the layer of
 /// depth `face_layer` below their faces (0: one cell), rounded to whole rows of the target's
 /// points (at least one): a 1 mm layer is 1.25 mm deep on a lattice of 0.625 mm.
-/// WoundMetrics::face_layer is the depth used.
+/// WoundMetrics::face_layer is the depth used. `outline_grid` > 0: the face wounds' outlines
+/// on a grid of that spacing (analysis/wound_outline.h).
 WoundMetrics wound_metrics_of(const WoundSample& sample, const mpm::Solver& solver,
-                              double face_layer);
+                              double face_layer, double outline_grid = 0.0);
 } // namespace vulnus::analysis

@@ -32,6 +32,12 @@ void declare_output_section(EntryTable& table)
                 "is the paper's 1 mm cell, so refined runs measure the same layer; 0 measures "
                 "one cell deep, a layer that thins with the cell (the wound flares at the "
                 "faces, so its shape then changes with the grid; docs/locking.md).");
+  table.declare("Wound outline grid", "0.001", Patterns::Double(0.0, 1.0),
+                "Spacing of the fixed square grid in each face plane onto which the face "
+                "layer's debris (failed points without deviatoric stress) is smoothed for the "
+                "wound's outline in summary.json (entrance_wound.outline): the region where "
+                "the smoothed indicator reaches one half [m]. Keep it at or above the point "
+                "spacing, and the same across a refinement series; 0: no outline.");
   table.leave();
 }
 
@@ -46,6 +52,7 @@ void parse_output_section(dealii::ParameterHandler& prm, OutputParameters& outpu
   output.checkpoint_wall_interval = prm.get_double("Checkpoint wall interval");
   output.checkpoints_kept = static_cast<unsigned int>(prm.get_integer("Checkpoints kept"));
   output.wound_face_layer = prm.get_double("Wound face layer");
+  output.wound_outline_grid = prm.get_double("Wound outline grid");
   prm.leave_subsection();
 }
 

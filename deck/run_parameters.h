@@ -27,6 +27,8 @@ struct OutputParameters
   /// Depth below the entrance and exit faces in which their wounds are measured, m (0: one
   /// cell); rounded to whole rows of the target's points.
   double wound_face_layer = 1.0e-3;
+  /// Spacing of the face planes' grid the wound outline is smoothed onto, m (0: none).
+  double wound_outline_grid = 1.0e-3;
   /// Set by `vulnus run --restart DIR`: continue from the newest checkpoint in `directory`.
   bool restart = false;
 };

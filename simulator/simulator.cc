@@ -78,6 +78,7 @@ int simulate(Stepper& stepper, const deck::RunParameters& parameters, io::RunDir
 
   analysis::RunTotals totals;
   totals.wound_face_layer = parameters.output.wound_face_layer;
+  totals.wound_outline_grid = parameters.output.wound_outline_grid;
   totals.warnings = scene_warnings(parameters, stepper.mpm_side() != nullptr);
   for (const std::string& w : totals.warnings)
     directory.warn(w);
