@@ -1,6 +1,8 @@
 // Small scenes for the MPM verification tests.
 #include "scene_fixtures.h"
 
+#include <cmath>
+
 namespace vulnus::test
 {
 mpm::NamedMaterial elastic_material(const std::string& name, const double bulk_modulus,
@@ -66,6 +68,35 @@ mpm::SceneParameters two_gel_spheres(const double density_left, const double den
   scene.bodies[0].initial_velocity = velocity_left;
   scene.bodies[1].initial_velocity = velocity_right;
   return scene;
+}
+
+double VibratingBar::wave_speed()
+{
+  return std::sqrt((bulk_modulus + 4.0 / 3.0 * 2.0 * c1) / density);
+}
+
+double VibratingBar::period() { return 4.0 * length / wave_speed(); }
+
+mpm::SceneParameters VibratingBar::scene(const double cell_size)
+{
+  const double width = 2e-3;
+  mpm::SceneParameters scene =
+    empty_scene(mpm::Vector3::Zero(), mpm::Vector3(length + 6e-3, width, width), cell_size);
+  scene.cfl = 0.3;
+  using F = mpm::FaceCondition;
+  scene.domain_faces = {{F::fixed, F::free, F::roller, F::roller, F::roller, F::roller}};
+  scene.materials.push_back(elastic_material("gel", bulk_modulus, c1));
+  scene.bodies.push_back(box_body("bar", "gel", mpm::Vector3::Zero(),
+                                  mpm::Vector3(length, width, width), density, 2));
+  return scene;
+}
+
+void VibratingBar::start_first_mode(mpm::Solver& solver)
+{
+  const double amplitude = 1e-3 * wave_speed();
+  solver.set_point_velocities([&](const mpm::Vector3& x) {
+    return mpm::Vector3(amplitude * std::sin(M_PI * x[0] / (2 * length)), 0, 0);
+  });
 }
 
 mpm::SceneParameters rigid_ball_into_gel_slab()

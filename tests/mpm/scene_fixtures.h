@@ -34,6 +34,20 @@ mpm::SceneParameters two_gel_spheres(double density_left, double density_right,
 /// 4 mm gel slab; all faces free, end time 0.12 ms.
 mpm::SceneParameters rigid_ball_into_gel_slab();
 
+/// A fixed-free bar along x (20 x 2 x 2 mm, roller sides: uniaxial strain) of gel (K = 1e5 Pa,
+/// c1 = 1e4 Pa, 1000 kg/m^3), CFL 0.3.
+struct VibratingBar
+{
+  static constexpr double length = 20e-3, density = 1000.0, bulk_modulus = 1e5, c1 = 1e4;
+  /// sqrt((K + 4/3 mu) / rho), mu = 2 c1: the speed of its waves.
+  static double wave_speed();
+  /// 4 L / wave speed: the period of its first mode.
+  static double period();
+  static mpm::SceneParameters scene(double cell_size);
+  /// Gives the bar's points the first mode's velocity at peak strain amplitude 1e-3.
+  static void start_first_mode(mpm::Solver& solver);
+};
+
 /// Advances to the end; returns the mpm::BlowUp message that stopped it, or "".
 std::string run_until_blow_up(mpm::Solver& solver);
 

@@ -73,27 +73,17 @@ TEST(MpmVerification, FreeBodyTranslatesExactly)
 
 namespace
 {
-/// Fixed-free bar of length L along x with roller sides (uniaxial strain), first mode.
+/// The fixed-free bar (test::VibratingBar) in its first mode.
 /// Returns the measured period over the analytic one, and the largest relative energy error.
 std::pair<double, double> vibrate_bar(const double cell_size, const mpm::UpdateScheme scheme,
                                       const mpm::ShapeFunction shape)
 {
-  const double L = 20e-3, width = 2e-3, density = 1000.0, K = 1e5, c1 = 1e4;
-  mpm::SceneParameters scene = test::empty_scene(Vector3::Zero(), Vector3(L + 6e-3, width, width), cell_size);
+  mpm::SceneParameters scene = test::VibratingBar::scene(cell_size);
   scene.update_scheme = scheme;
   scene.shape_function = shape;
-  scene.cfl = 0.3;
-  using F = mpm::FaceCondition;
-  scene.domain_faces = {{F::fixed, F::free, F::roller, F::roller, F::roller, F::roller}};
-  scene.materials.push_back(test::elastic_material("gel", K, c1));
-  scene.bodies.push_back(test::box_body("bar", "gel", Vector3::Zero(), Vector3(L, width, width), density, 2));
   mpm::Solver solver(scene);
-  const double amplitude = 1e-3 * std::sqrt((K + 4.0 / 3.0 * 2 * c1) / density); // strain 1e-3
-  solver.set_point_velocities([&](const Vector3& x) {
-    return Vector3(amplitude * std::sin(M_PI * x[0] / (2 * L)), 0, 0);
-  });
-  const double wave_speed = std::sqrt((K + 4.0 / 3.0 * 2.0 * c1) / density);
-  const double period = 4.0 * L / wave_speed;
+  test::VibratingBar::start_first_mode(solver);
+  const double period = test::VibratingBar::period();
   double previous_velocity = solver.diagnostics().bodies[0].velocity[0];
   double previous_time = 0.0;
   std::vector<double> crossings;

@@ -46,25 +46,13 @@ double spin_energy_left(const mpm::VelocityTransfer transfer, const int order, c
 /// its kinetic plus strain energy after 1.5 periods over the start.
 double bar_energy_left(const mpm::VelocityTransfer transfer, const int order)
 {
-  const double L = 20e-3, width = 2e-3, density = 1000.0, K = 1e5, c1 = 1e4;
-  mpm::SceneParameters scene =
-    test::empty_scene(Vector3::Zero(), Vector3(L + 6e-3, width, width), 1e-3);
+  mpm::SceneParameters scene = test::VibratingBar::scene(1e-3);
   scene.velocity_transfer = transfer;
   scene.xpic_order = order;
-  scene.cfl = 0.3;
-  using F = mpm::FaceCondition;
-  scene.domain_faces = {{F::fixed, F::free, F::roller, F::roller, F::roller, F::roller}};
-  scene.materials.push_back(test::elastic_material("gel", K, c1));
-  scene.bodies.push_back(test::box_body("bar", "gel", Vector3::Zero(), Vector3(L, width, width), density, 2));
   mpm::Solver solver(scene);
-  const double wave_speed = std::sqrt((K + 4.0 / 3.0 * 2.0 * c1) / density);
-  const double amplitude = 1e-3 * wave_speed;
-  solver.set_point_velocities([&](const Vector3& x) {
-    return Vector3(amplitude * std::sin(M_PI * x[0] / (2 * L)), 0, 0);
-  });
+  test::VibratingBar::start_first_mode(solver);
   const double start = solver.initial_energy();
-  const double period = 4.0 * L / wave_speed;
-  while (solver.time() < 1.5 * period)
+  while (solver.time() < 1.5 * test::VibratingBar::period())
     solver.advance();
   const mpm::SceneDiagnostics d = solver.diagnostics();
   return (d.kinetic_energy + d.strain_energy) / start;
