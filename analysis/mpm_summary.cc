@@ -2,6 +2,7 @@
 #include "analysis/mpm_summary.h"
 
 #include "analysis/wound_metrics.h"
+#include "analysis/wound_resolution.h"
 #include "mpm/body_builder.h"
 
 #include <algorithm>
@@ -164,6 +165,21 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
   j["entrance_wound"] = face_json(wound.entrance);
   j["exit_wound"] = face_json(wound.exit);
   j["wound_face_layer_m"] = wound.face_layer;
+  bool fibred_target = false;
+  for (std::size_t b = 0; b < solver.points().n_bodies(); ++b)
+    if (static_cast<int>(b) != projectile && solver.body_material(b).uses_fibers())
+      fibred_target = true;
+  nlohmann::json figures = nlohmann::json::array(), unresolved = nlohmann::json::array();
+  for (const FigureResolution& r : resolve_wound_figures(wound, solver.scene().cell_size, fibred_target))
+  {
+    figures.push_back({{"figure", r.figure}, {"cells_across", r.cells_across},
+                       {"resolved", r.resolved},
+                       {"reason", r.resolved ? nlohmann::json() : nlohmann::json(r.reason)}});
+    if (!r.resolved)
+      unresolved.push_back(r.figure);
+  }
+  j["wound_resolution"] = {{"cells_needed", cells_needed}, {"figures", figures},
+                           {"unresolved", unresolved}};
   j["tract"] = {{"depth_m", wound.tract_depth},
                 {"area_m2", wound.tract_area},
                 {"debris_area_m2", wound.debris_tract_area},

@@ -209,6 +209,7 @@ std::string MpmStepper::final_report(const nlohmann::json& summary) const
     o << bullet_report(summary);
     o << projectile_note(solver);
   }
+  o << unresolved_wound_report(summary);
   return o.str();
 }
 
@@ -256,6 +257,17 @@ std::string projectile_note(const mpm::Solver& solver)
                             solver.scene().bodies[body].material);
   const std::string hold = rigid_hold_final_note(solver);
   return (note.empty() ? note : "\n" + note) + (hold.empty() ? hold : "\n" + hold);
+}
+
+std::string unresolved_wound_report(const nlohmann::json& summary)
+{
+  const auto it = summary.find("wound_resolution");
+  if (it == summary.end() || (*it)["unresolved"].empty())
+    return "";
+  std::string names;
+  for (const auto& name : (*it)["unresolved"])
+    names += (names.empty() ? "" : ", ") + name.get<std::string>();
+  return "\nwound figures not resolved at this cell (summary.json wound_resolution): " + names;
 }
 
 std::string bullet_report(const nlohmann::json& summary)

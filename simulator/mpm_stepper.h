@@ -28,6 +28,8 @@ std::string projectile_note(const mpm::Solver& solver);
 /// The closing line's bullet part, from summary.json's "bullet": its exit velocity, or that it
 /// has not left the target.
 std::string bullet_report(const nlohmann::json& summary);
+/// "; wound figures not resolved at this cell: ..." from summary.json's wound_resolution, or "".
+std::string unresolved_wound_report(const nlohmann::json& summary);
 
 /// "time step .., particle-to-grid .., ..., checks .." (s): where an MPM solver's time went.
 std::string phase_report(const mpm::PhaseTimes& times);
