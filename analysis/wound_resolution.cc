@@ -60,7 +60,8 @@ std::vector<FigureResolution> resolve_wound_figures(const WoundMetrics& m, const
            length > 0.0 ? std::sqrt(4.0 * failed_volume / length / M_PI) : 0.0);
   const double total_width = mean_diameter(m.tract_area);
   flag("failed_volume_m3.total", total_width);
-  flag("failed_volume_m3.fiber", total_width);
+  if (m.volumes[2] > 0.0)
+    flag("failed_volume_m3.fiber", total_width);
   flag("tract.area_m2", total_width);
   for (const auto& [name, wound] : {std::pair<std::string, const FaceWound*>{"entrance_wound", &m.entrance},
                                     {"exit_wound", &m.exit}})

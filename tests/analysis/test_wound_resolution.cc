@@ -72,6 +72,7 @@ TEST(WoundResolution, AFibredTargetsFailureFlagsAreNeverResolved)
   }
   EXPECT_TRUE(fine.at("debris").resolved);
   EXPECT_TRUE(fine.at("entrance_wound.outline").resolved);
+  EXPECT_EQ(fine.count("failed_volume_m3.fiber"), 0u); // no fibre-failed point: no figure
 }
 
 TEST(WoundResolution, AnEmptyRegionHasNoFigureToJudge)
