@@ -2,22 +2,19 @@
 // points (its diameter, aspect ratio 1), an elliptic cylinder (its axes ratio), a cone (area
 // growing with depth), volumes by failure type, and face wounds in a layer of fixed depth.
 #include "analysis/wound_metrics.h"
+#include "point_set.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
 
+using namespace vulnus;
 using namespace vulnus::analysis;
 
 namespace
 {
-struct PointSet
-{
-  std::vector<Vector3> x;
-  std::vector<double> volume;
-  std::vector<std::uint8_t> flags;
-};
+using test::PointSet;
 
 /// A 40 x 10 x 40 mm slab (y through the thickness) of points at spacing s; flag(x) decides.
 PointSet slab(const double s, const std::function<std::uint8_t(const Vector3&)>& flag)

@@ -3,22 +3,19 @@
 // lattice by half a spacing leaves the outline where it was; failed points scattered around
 // the wound hardly move it.
 #include "analysis/wound_metrics.h"
+#include "point_set.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
 
+using namespace vulnus;
 using namespace vulnus::analysis;
 
 namespace
 {
-struct PointSet
-{
-  std::vector<Vector3> x;
-  std::vector<double> volume;
-  std::vector<std::uint8_t> flags;
-};
+using test::PointSet;
 
 /// A 40 x 4 x 40 mm slab (y through the thickness) of points at spacing s, the lattice moved
 /// by `shift` in x and z; flag(x, index) decides each point's flag.
