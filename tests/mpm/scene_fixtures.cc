@@ -70,6 +70,31 @@ mpm::SceneParameters two_gel_spheres(const double density_left, const double den
   return scene;
 }
 
+mpm::SceneParameters SpinningBlock::scene(const mpm::VelocityTransfer transfer,
+                                          const int xpic_order)
+{
+  mpm::SceneParameters scene =
+    empty_scene(mpm::Vector3(-6e-3, -6e-3, -3e-3), mpm::Vector3(6e-3, 6e-3, 3e-3), 1e-3);
+  scene.velocity_transfer = transfer;
+  scene.xpic_order = xpic_order;
+  scene.cfl = 0.3;
+  scene.materials.push_back(elastic_material("gel", 1e5, 1e4));
+  scene.bodies.push_back(box_body("block", "gel", mpm::Vector3(-3e-3, -3e-3, -1e-3),
+                                  mpm::Vector3(3e-3, 3e-3, 1e-3), 1000.0, 2));
+  return scene;
+}
+
+double SpinningBlock::energy_left(const mpm::SceneParameters& scene, const int steps)
+{
+  mpm::Solver solver(scene);
+  solver.set_point_velocities([](const mpm::Vector3& x)
+                              { return mpm::Vector3(-omega * x[1], omega * x[0], 0); });
+  const double start = solver.diagnostics().kinetic_energy;
+  for (int i = 0; i < steps; ++i)
+    solver.advance();
+  return solver.diagnostics().kinetic_energy / start;
+}
+
 double VibratingBar::wave_speed()
 {
   return std::sqrt((bulk_modulus + 4.0 / 3.0 * 2.0 * c1) / density);

@@ -48,6 +48,16 @@ struct VibratingBar
   static void start_first_mode(mpm::Solver& solver);
 };
 
+/// A free 6 x 6 x 2 mm gel block in the middle of a 12 x 12 x 6 mm grid of 1 mm cells, spun
+/// rigidly about z at 200 rad/s: what a velocity transfer keeps of a rigid rotation.
+struct SpinningBlock
+{
+  static constexpr double omega = 200.0;
+  static mpm::SceneParameters scene(mpm::VelocityTransfer transfer, int xpic_order = 5);
+  /// Kinetic energy left after `steps` of the spin (0.005 rad each), over its start.
+  static double energy_left(const mpm::SceneParameters& scene, int steps);
+};
+
 /// Advances to the end; returns the mpm::BlowUp message that stopped it, or "".
 std::string run_until_blow_up(mpm::Solver& solver);
 

@@ -15,31 +15,10 @@ using mpm::Vector3;
 
 namespace
 {
-/// A free 6 x 6 x 2 mm gel block in the middle of a 12 x 12 x 6 mm grid of 1 mm cells.
-mpm::SceneParameters free_block(const mpm::VelocityTransfer transfer, const int order)
-{
-  mpm::SceneParameters scene =
-    test::empty_scene(Vector3(-6e-3, -6e-3, -3e-3), Vector3(6e-3, 6e-3, 3e-3), 1e-3);
-  scene.velocity_transfer = transfer;
-  scene.xpic_order = order;
-  scene.cfl = 0.3;
-  scene.materials.push_back(test::elastic_material("gel", 1e5, 1e4));
-  scene.bodies.push_back(test::box_body("block", "gel", Vector3(-3e-3, -3e-3, -1e-3),
-                                        Vector3(3e-3, 3e-3, 1e-3), 1000.0, 2));
-  return scene;
-}
-
-/// Kinetic energy left after `steps` of a block spinning rigidly about z at 200 rad/s, over
-/// its start.
+/// The spinning block's scene under `transfer`, XPIC of the given order.
 double spin_energy_left(const mpm::VelocityTransfer transfer, const int order, const int steps)
 {
-  mpm::Solver solver(free_block(transfer, order));
-  const double omega = 200.0;
-  solver.set_point_velocities([&](const Vector3& x) { return Vector3(-omega * x[1], omega * x[0], 0); });
-  const double start = solver.diagnostics().kinetic_energy;
-  for (int i = 0; i < steps; ++i)
-    solver.advance();
-  return solver.diagnostics().kinetic_energy / start;
+  return test::SpinningBlock::energy_left(test::SpinningBlock::scene(transfer, order), steps);
 }
 
 /// A fixed-free bar along x (uniaxial strain, roller sides) in its first mode at strain 1e-3:
@@ -63,7 +42,7 @@ double bar_energy_left(const mpm::VelocityTransfer transfer, const int order)
 // points' momentum of S u: every term after the first carries no momentum.
 TEST(XpicTransfer, ConservesMomentumToRounding)
 {
-  mpm::Solver solver(free_block(mpm::VelocityTransfer::xpic, 5));
+  mpm::Solver solver(test::SpinningBlock::scene(mpm::VelocityTransfer::xpic, 5));
   std::mt19937 random(7);
   std::uniform_real_distribution<double> speed(-1.0, 1.0);
   solver.set_point_velocities([&](const Vector3&) { return Vector3(speed(random), speed(random), speed(random)); });
@@ -78,8 +57,8 @@ TEST(XpicTransfer, ConservesMomentumToRounding)
 
 TEST(XpicTransfer, OrderOneIsPicBitForBit)
 {
-  mpm::Solver pic(free_block(mpm::VelocityTransfer::pic, 1));
-  mpm::Solver xpic(free_block(mpm::VelocityTransfer::xpic, 1));
+  mpm::Solver pic(test::SpinningBlock::scene(mpm::VelocityTransfer::pic, 1));
+  mpm::Solver xpic(test::SpinningBlock::scene(mpm::VelocityTransfer::xpic, 1));
   auto field = [](const Vector3& x) { return Vector3(std::sin(900 * x[1]), x[0] * 300, 0.1); };
   pic.set_point_velocities(field);
   xpic.set_point_velocities(field);
