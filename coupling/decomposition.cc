@@ -334,6 +334,7 @@ HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters&
     }
     fe.has_focus = true;
     fe.track_failure_proximity = true;
+    fe.failure_proximity = hybrid.adaptive.failure;
     fe.focus_min = split.limit_min;
     fe.focus_max = split.limit_max;
   }

@@ -2,6 +2,8 @@
 // the tract, which body it splits, and the coupling scheme. SI units.
 #pragma once
 
+#include "fem/fem_parameters.h"
+
 #include <array>
 #include <string>
 
@@ -47,6 +49,9 @@ struct AdaptiveZoneParameters
   /// A cell converts when a quadrature point reaches this fraction of the failure criterion
   /// (matrix shear over its limit, fiber stretch - 1 over limit - 1) or has failed.
   double threshold = 0.5;
+  /// Of which failure: any (matrix or fibres; a point that failed at all converts its cell),
+  /// or total (both; the far field carries matrix failure, fem::FailureProximity).
+  fem::FailureProximity failure = fem::FailureProximity::any_failure;
   /// A cell also converts when an interface node of it has moved this fraction of a grid
   /// cell (the shared grid node stays put: the coupling assumes small interface motion):
   /// its whole displacement, or its departure from its cell's best-fit affine motion, which

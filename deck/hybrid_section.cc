@@ -29,6 +29,13 @@ void declare_hybrid_section(EntryTable& table)
                 "A cell converts when one of its quadrature points reaches this fraction of the "
                 "failure limits (matrix shear / limit, (fiber stretch - 1) / (limit - 1)) or "
                 "has failed.");
+  table.declare("Adaptive zone failure", "any", Patterns::Selection("any|total"),
+                "Which failure Adaptive zone threshold measures: any (a point nearing the "
+                "failure of its matrix or of its fibers, or failed at all, converts its cell) or "
+                "total (nearing the failure of both, a failed part counting as past its limit: the "
+                "far field carries matrix failure with the shared law and gives a cell up only "
+                "near total failure; pair it with Adaptive zone distortion, since a matrix-failed "
+                "cell may shear far).");
   table.declare("Adaptive zone interface displacement", "0.1", Patterns::Double(0.0, 10.0),
                 "The zone also grows where an interface node has moved this fraction of a "
                 "grid cell, as Adaptive zone interface motion measures it (the validity monitor "
@@ -92,6 +99,9 @@ void parse_hybrid_section(dealii::ParameterHandler& prm, coupling::HybridParamet
   hybrid.path_margin = prm.get_double("Zone margin");
   hybrid.adaptive.enabled = prm.get_bool("Adaptive zone");
   hybrid.adaptive.threshold = prm.get_double("Adaptive zone threshold");
+  hybrid.adaptive.failure = prm.get("Adaptive zone failure") == "total"
+                              ? fem::FailureProximity::total_failure
+                              : fem::FailureProximity::any_failure;
   hybrid.adaptive.interface_displacement = prm.get_double("Adaptive zone interface displacement");
   hybrid.adaptive.interface_motion = prm.get("Adaptive zone interface motion") == "non-affine"
                                        ? coupling::InterfaceMotion::non_affine

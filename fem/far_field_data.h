@@ -121,8 +121,7 @@ struct FarFieldSolver::Data
   std::vector<dealii::Tensor<2, 3>> cell_stress; ///< by active cell index
   std::vector<unsigned char> cell_failure;       ///< max flag over the cell's points
   std::vector<double> cell_wave_speed;           ///< m/s
-  /// prm.track_failure_proximity: the largest over the cell's points of matrix shear bound
-  /// / limit and (fiber stretch - 1) / (limit - 1), infinite once a point has failed.
+  /// prm.track_failure_proximity: the largest over the cell's points of failure_proximity.
   std::vector<double> cell_failure_proximity;
   std::vector<double> cell_size;                 ///< smallest vertex distance / degree, m
   /// Quiet cells: a cell none of whose nodes has moved more than this fraction of its size
@@ -295,11 +294,14 @@ double implicit_alpha_f(const FeSceneParameters& prm);
 /// the same hierarchies (bit for bit the same steps).
 void forget_implicit_preconditioner(FarFieldSolver::Data& d);
 
-/// The failure proximity of one point (FeSceneParameters::track_failure_proximity): the larger
-/// of the matrix shear's upper bound over its limit and, with a fiber, (fiber stretch - 1) /
-/// (limit - 1).
+/// The failure proximity of one point with failure flags `failure`
+/// (FeSceneParameters::track_failure_proximity): of its matrix, the shear's upper bound over
+/// its limit; of its fibers (when it has a fiber), (stretch - 1) / (limit - 1); of a part that
+/// has failed, infinity. any_failure: the larger of the two (infinity once either failed);
+/// total_failure: the smaller (the part that fails last).
 double failure_proximity(const materials::FailureParameters& criterion, const Eigen::Matrix3d& F,
-                         const Eigen::Vector3d* fiber);
+                         const Eigen::Vector3d* fiber, std::uint8_t failure,
+                         FailureProximity measure);
 
 /// Collective: the owned nodes, boundary faces (the converted cells' faces next to live cells
 /// among the interface faces), Dirichlet dofs, interface nodes, dead dofs and lumped mass, for

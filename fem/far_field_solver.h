@@ -80,7 +80,9 @@ struct FeDiagnostics
   /// Impulse the supports of each face exerted on the body since t = 0 (the time integral of
   /// their reactions with the integrator's weights; zero on free faces), N s.
   std::array<dealii::Tensor<1, 3>, n_slab_faces + 1> support_impulses;
-  unsigned long long n_failed_points = 0; ///< quadrature points with any failure flag
+  /// Quadrature points failed beyond what the far field carries: any failure flag, or under
+  /// FailureProximity::total_failure a total failure (matrix failure is carried).
+  unsigned long long n_failed_points = 0;
   double max_wave_speed = 0.0;            ///< m/s over quadrature points
 };
 

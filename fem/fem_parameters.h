@@ -92,6 +92,13 @@ enum class LinearSolverType
 /// Face order of FeSceneParameters::faces and of the boundary ids: x-, x+, y-, y+, z-, z+.
 inline constexpr unsigned int n_slab_faces = 6;
 
+/// What a far-field cell's failure proximity (the adaptive zone's criterion) measures.
+enum class FailureProximity
+{
+  any_failure,  ///< the nearest failure of matrix or fibres
+  total_failure ///< the nearest failure of both
+};
+
 struct FeSceneParameters
 {
   /// Slab box (m). The paper's slab: 50 x 10 x 50 mm, y through the thickness.
@@ -110,6 +117,11 @@ struct FeSceneParameters
   /// Keep, per cell, how near its points are to failure (the adaptive zone's criterion,
   /// FarFieldSolver::cells_nearing_failure), evaluated with every force evaluation.
   bool track_failure_proximity = false;
+  /// What that proximity measures: the nearest failure of any part (a point that has failed
+  /// at all is infinitely near), or the nearest total failure, so that the far field carries
+  /// matrix failure: a point is as near as the later of its matrix and its fibres, a failed
+  /// part counting as past its limit.
+  FailureProximity failure_proximity = FailureProximity::any_failure;
   /// The explicit force evaluation skips cells still at rest (no node moved more than 1e-12
   /// of the cell size, every point intact): their force is zero to that strain. Off only to
   /// check that skipping changes nothing.

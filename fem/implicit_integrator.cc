@@ -208,7 +208,9 @@ void compute_newton_cell(FarFieldSolver::Data& d, const std::vector<unsigned int
     if (criterion != nullptr)
       proximity = std::max(proximity, failure_proximity(*criterion, w.law.F_law[q],
                                                         fibers ? &d.fiber_directions[first + q]
-                                                               : nullptr));
+                                                               : nullptr,
+                                                        states[q].failure,
+                                                        d.prm.failure_proximity));
   }
   for (unsigned int i = 0; i < n_dofs; ++i)
   {
@@ -222,8 +224,7 @@ void compute_newton_cell(FarFieldSolver::Data& d, const std::vector<unsigned int
   d.cell_failure[k] = flags;
   d.cell_wave_speed[k] = c_max;
   if (criterion != nullptr)
-    d.cell_failure_proximity[k] =
-      flags != materials::intact ? std::numeric_limits<double>::infinity() : proximity;
+    d.cell_failure_proximity[k] = proximity;
 }
 
 /// Assembles the Newton system at u_alpha, a_alpha into im.matrix and im.rhs (increment

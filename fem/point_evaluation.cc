@@ -191,7 +191,8 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
       if (criterion != nullptr)
         proximity = std::max(proximity, failure_proximity(*criterion, F_law,
                                                           fibers ? &fiber_directions[first + q]
-                                                                 : nullptr));
+                                                                 : nullptr,
+                                                          state.failure, prm.failure_proximity));
     }
     if (average_volume)
       volume_averaged_stresses(n_q_points, w.F.data(), w.JxW.data(), w.sigma.data(), j_bar,
@@ -223,8 +224,7 @@ EvaluationSums FarFieldSolver::Data::evaluate_internal_forces(const Vector& u_gh
     cell_failure[k] = flags;
     cell_wave_speed[k] = c_max;
     if (criterion != nullptr)
-      cell_failure_proximity[k] =
-        flags != materials::intact ? std::numeric_limits<double>::infinity() : proximity;
+      cell_failure_proximity[k] = proximity;
     return Outcome::evaluated;
   };
 
@@ -351,13 +351,21 @@ const materials::FailureParameters* FarFieldSolver::Data::proximity_criterion() 
 }
 
 double failure_proximity(const materials::FailureParameters& criterion, const Eigen::Matrix3d& F,
-                         const Eigen::Vector3d* fiber)
+                         const Eigen::Vector3d* fiber, const std::uint8_t failure,
+                         const FailureProximity measure)
 {
-  double proximity = materials::matrix_shear_bound(criterion, F) / criterion.matrix_shear_limit;
-  if (fiber != nullptr)
-    proximity =
-      std::max(proximity, ((F * *fiber).norm() - 1.0) / (criterion.fiber_stretch_limit - 1.0));
-  return proximity;
+  constexpr double past = std::numeric_limits<double>::infinity();
+  const double matrix =
+    (failure & materials::matrix_failed)
+      ? past
+      : materials::matrix_shear_bound(criterion, F) / criterion.matrix_shear_limit;
+  if (fiber == nullptr)
+    return matrix;
+  const double fibers = (failure & materials::fiber_failed)
+                          ? past
+                          : ((F * *fiber).norm() - 1.0) / (criterion.fiber_stretch_limit - 1.0);
+  return measure == FailureProximity::any_failure ? std::max(matrix, fibers)
+                                                  : std::min(matrix, fibers);
 }
 
 void FarFieldSolver::Data::index_cell_dofs(const Vector& ghosted_layout)
@@ -428,6 +436,7 @@ void FarFieldSolver::Data::commit_states()
 {
   std::swap(committed_states, trial_states);
   unsigned long long n_failed = 0;
+  const bool carries_matrix_failure = prm.failure_proximity == FailureProximity::total_failure;
   // The states come from a pass over live_cells (the integrators commit after one).
   const long n_live = static_cast<long>(live_cells.size());
 #pragma omp parallel for schedule(static) reduction(+ : n_failed)
@@ -435,7 +444,14 @@ void FarFieldSolver::Data::commit_states()
   {
     const std::size_t first = std::size_t(live_cells[c]->active_cell_index()) * n_q_points;
     for (unsigned int q = 0; q < n_q_points; ++q)
-      n_failed += committed_states[first + q].failure != materials::intact ? 1 : 0;
+    {
+      const std::uint8_t failure = committed_states[first + q].failure;
+      n_failed += (carries_matrix_failure
+                     ? (failure & materials::total_failure) == materials::total_failure
+                     : failure != materials::intact)
+                    ? 1
+                    : 0;
+    }
   }
   n_failed = Utilities::MPI::sum(n_failed, comm);
   // Loud on the first failure and whenever the count has doubled since the last warning.
@@ -444,7 +460,8 @@ void FarFieldSolver::Data::commit_states()
     last_warned_failures = n_failed;
   if (warn && Utilities::MPI::this_mpi_process(comm) == 0)
     std::cerr << "\n*** WARNING (vulnus FE): " << n_failed
-              << " finite element quadrature points have FAILED at t = " << time
+              << " finite element quadrature points have FAILED"
+              << (carries_matrix_failure ? " totally" : "") << " at t = " << time
               << " s. Failure has reached the FE far field: the MPM zone is too small for "
                  "this scene. ***\n"
               << std::endl;

@@ -63,7 +63,11 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
     << scheme_name(split.hybrid.scheme) << ", " << omp_get_max_threads() << " thread(s)";
   if (split.hybrid.adaptive.enabled)
     o << "; adaptive zone: cells convert at " << split.hybrid.adaptive.threshold
-      << " of the failure limits, with " << split.hybrid.adaptive.margin_cells
+      << " of the "
+      << (split.hybrid.adaptive.failure == fem::FailureProximity::total_failure
+            ? "total failure's (the far field carries matrix failure)"
+            : "failure")
+      << " limits, with " << split.hybrid.adaptive.margin_cells
       << " cells around them, within (" << split.limit_min[0] << ", " << split.limit_min[1]
       << ", " << split.limit_min[2] << ") to (" << split.limit_max[0] << ", "
       << split.limit_max[1] << ", " << split.limit_max[2] << ") m, checked every "
