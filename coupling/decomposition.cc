@@ -181,6 +181,18 @@ std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& sc
   if (adaptive.enabled && !(adaptive.threshold > 0.0 && adaptive.threshold <= 1.0))
     problems.push_back({{"adaptive.threshold"}, "outside (0, 1]",
                         "a fraction of the failure limits, about 0.5"});
+  if (adaptive.failure == fem::FailureProximity::total_failure && !adaptive.enabled)
+    problems.push_back({{"adaptive.failure"}, "total without an adaptive zone",
+                        "set Hybrid/Adaptive zone = true, or Adaptive zone failure = any"});
+  // A matrix-failed tissue point resists neither shear nor tension (unless its fibres are
+  // stretched): a far-field cell of them must convert before it inverts.
+  if (adaptive.enabled && adaptive.failure == fem::FailureProximity::total_failure &&
+      !(adaptive.distortion > 0.0) && !(adaptive.jacobian_ratio > 0.0))
+    problems.push_back({{"adaptive.failure"},
+                        "total with neither cell-motion rule on: a far-field cell whose matrix "
+                        "failed has no shear stiffness and may invert before it converts",
+                        "set Hybrid/Adaptive zone distortion (e.g. 0.5) or Adaptive zone corner "
+                        "Jacobian ratio (e.g. 0.3) > 0, or Adaptive zone failure = any"});
   if (adaptive.enabled && !(adaptive.reach >= scene.cell_size))
     problems.push_back({{"adaptive.reach"}, "below one grid cell",
                         "give how far the zone may grow, in m"});

@@ -47,10 +47,11 @@ struct AdaptiveZoneParameters
 {
   bool enabled = false;
   /// A cell converts when a quadrature point reaches this fraction of the failure criterion
-  /// (matrix shear over its limit, fiber stretch - 1 over limit - 1) or has failed.
+  /// (matrix shear over its limit, fiber stretch - 1 over limit - 1) or has failed, as
+  /// `failure` measures it.
   double threshold = 0.5;
-  /// Of which failure: any (matrix or fibres; a point that failed at all converts its cell),
-  /// or total (both; the far field carries matrix failure, fem::FailureProximity).
+  /// Of which failure: any (matrix or fibers; a point that failed at all converts its cell),
+  /// or total (both; the far field carries partial failure, fem::FailureProximity).
   fem::FailureProximity failure = fem::FailureProximity::any_failure;
   /// A cell also converts when an interface node of it has moved this fraction of a grid
   /// cell (the shared grid node stays put: the coupling assumes small interface motion):

@@ -28,14 +28,16 @@ void declare_hybrid_section(EntryTable& table)
   table.declare("Adaptive zone threshold", "0.5", Patterns::Double(0.0, 1.0),
                 "A cell converts when one of its quadrature points reaches this fraction of the "
                 "failure limits (matrix shear / limit, (fiber stretch - 1) / (limit - 1)) or "
-                "has failed.");
+                "has failed, as Adaptive zone failure measures it.");
   table.declare("Adaptive zone failure", "any", Patterns::Selection("any|total"),
                 "Which failure Adaptive zone threshold measures: any (a point nearing the "
                 "failure of its matrix or of its fibers, or failed at all, converts its cell) or "
                 "total (nearing the failure of both, a failed part counting as past its limit: the "
-                "far field carries matrix failure with the shared law and gives a cell up only "
-                "near total failure; pair it with Adaptive zone distortion, since a matrix-failed "
-                "cell may shear far).");
+                "far field carries partial failure with the shared law and gives a cell up only "
+                "near total failure, and its failed points, the FE warning and Stop when FE "
+                "points fail count total failures only). total needs Adaptive zone = true and "
+                "Adaptive zone distortion or corner Jacobian ratio > 0: a matrix-failed cell has "
+                "no shear stiffness.");
   table.declare("Adaptive zone interface displacement", "0.1", Patterns::Double(0.0, 10.0),
                 "The zone also grows where an interface node has moved this fraction of a "
                 "grid cell, as Adaptive zone interface motion measures it (the validity monitor "
@@ -79,9 +81,9 @@ void declare_hybrid_section(EntryTable& table)
                 "mass; stable for windows of any length, dissipating what the far field's step "
                 "cannot carry).");
   table.declare("Stop when FE points fail", "true", Patterns::Bool(),
-                "true: the run stops when a far-field quadrature point fails (the wound has "
-                "reached the FE region, whose answer is then not the MPM zone's); false: it "
-                "goes on and warns.");
+                "true: the run stops when a far-field quadrature point fails (totally, under "
+                "Adaptive zone failure = total: the wound has reached the FE region, whose "
+                "answer is then not the MPM zone's); false: it goes on and warns.");
   table.leave();
 }
 

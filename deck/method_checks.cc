@@ -28,6 +28,7 @@ std::string entry_of(std::string parameter, const std::string& body)
     {"window_coupling", "Hybrid/Window coupling"},
     {"path_margin", "Hybrid/Zone margin"},
     {"adaptive.threshold", "Hybrid/Adaptive zone threshold"},
+    {"adaptive.failure", "Hybrid/Adaptive zone failure"},
     {"adaptive.reach", "Hybrid/Adaptive zone reach"},
     {"focus_min", "Hybrid/Adaptive zone reach"},
     {"focus_max", "Hybrid/Adaptive zone reach"},

@@ -255,10 +255,11 @@ public:
 
   // --- adaptive zone (fem/far_field_conversion.cc) ---------------------------------------
   /// Collective: the reference centres of the cells (every rank's, on every rank) where a
-  /// quadrature point, at the last force evaluation, had failed or reached `threshold` of the
-  /// failure criterion: the larger of the matrix shear's upper bound (sqrt(2) |dev B| times
-  /// the measure's factor, at most 1.16 times the exact value) over its limit and (fiber
-  /// stretch - 1) / (limit - 1). Needs FeSceneParameters::track_failure_proximity.
+  /// quadrature point, at the last force evaluation, reached `threshold` of the failure
+  /// criterion as FeSceneParameters::failure_proximity measures it (fem/far_field_data.h
+  /// failure_proximity: the matrix shear's upper bound, sqrt(2) |dev B| times the measure's
+  /// factor, at most 1.16 times the exact value, over its limit, and (fiber stretch - 1) /
+  /// (limit - 1)). Needs FeSceneParameters::track_failure_proximity.
   std::vector<dealii::Point<3>> cells_nearing_failure(double threshold) const;
   /// Collective: the live cells (every rank's, on every rank) distorted beyond `limits`, and
   /// the interface cells whose nodes leave the cell's best-fit affine motion by more than

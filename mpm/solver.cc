@@ -140,36 +140,6 @@ Solver::Solver(const SceneParameters& deck, const MPI_Comm communicator)
   check_state();
 }
 
-void Solver::set_point_velocities(const std::function<Vector3(const Vector3&)>& field,
-                                  const int body)
-{
-  if (rigid_hold.record().held && (body < 0 || body == projectile_body))
-  {
-    rigid_hold.release("its points were given a velocity field", static_cast<long>(n_steps),
-                       current_time);
-    make_projectile_deformable();
-  }
-  for (std::size_t b = 0; b < particles.n_bodies(); ++b)
-    if (!grid_settings.body_is_rigid[b] && (body < 0 || static_cast<int>(b) == body))
-      for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
-      {
-        const Vector3& x = particles.position[p];
-        particles.velocity[p] = field(x);
-        if (!transfer.affine)
-          continue;
-        // APIC's affine part starts as the field's gradient, or the first scatter is PIC's.
-        const double step = 1e-3 * grid.cell_size();
-        Tensor2 gradient;
-        for (int j = 0; j < 3; ++j)
-          gradient.col(j) = (field(x + step * Vector3::Unit(j)) - field(x - step * Vector3::Unit(j))) /
-                            (2.0 * step);
-        particles.affine_velocity[p] = gradient.cast<float>();
-      }
-  const SceneDiagnostics d = diagnostics();
-  energy_at_start = d.kinetic_energy + d.strain_energy + d.potential_energy;
-  momentum_at_start = d.momentum;
-}
-
 bool Solver::projectile_is_far_stiffer() const
 {
   const std::vector<double> impedance = body_impedances();

@@ -97,7 +97,8 @@ public:
 
   /// Replaces the point velocities of the deformable bodies (or of body `body` only) by
   /// field(x) (initial conditions such as a vibration mode), and under APIC their affine
-  /// part by its gradient; resets the initial energy.
+  /// part by its gradient (so the field must be smooth and give the same value for the same
+  /// x); resets the initial energy.
   void set_point_velocities(const std::function<Vector3(const Vector3&)>& field, int body = -1);
 
   /// dt = CFL h / max over deformable points of (wave speed + |v|), rigid bodies by |v| only.

@@ -63,11 +63,11 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
     << scheme_name(split.hybrid.scheme) << ", " << omp_get_max_threads() << " thread(s)";
   if (split.hybrid.adaptive.enabled)
     o << "; adaptive zone: cells convert at " << split.hybrid.adaptive.threshold
-      << " of the "
+      << " of the failure limits"
       << (split.hybrid.adaptive.failure == fem::FailureProximity::total_failure
-            ? "total failure's (the far field carries matrix failure)"
-            : "failure")
-      << " limits, with " << split.hybrid.adaptive.margin_cells
+            ? " of a point's last intact part (the far field carries partial failure)"
+            : "")
+      << ", with " << split.hybrid.adaptive.margin_cells
       << " cells around them, within (" << split.limit_min[0] << ", " << split.limit_min[1]
       << ", " << split.limit_min[2] << ") to (" << split.limit_max[0] << ", "
       << split.limit_max[1] << ", " << split.limit_max[2] << ") m, checked every "
@@ -209,8 +209,12 @@ std::vector<std::string> HybridStepper::final_warnings() const
   std::vector<std::string> warnings;
   const unsigned long long failed = solver.fe().diagnostics().n_failed_points; // collective
   if (failed > 0)
-    warnings.push_back("*** " + std::to_string(failed) +
-                       " FE quadrature points failed: the wound reached the far field, whose "
+    warnings.push_back("*** " + std::to_string(failed) + " FE quadrature points failed" +
+                       (solver.scene().hybrid.adaptive.failure ==
+                            fem::FailureProximity::total_failure
+                          ? std::string(" totally")
+                          : std::string()) +
+                       ": the wound reached the far field, whose "
                        "answer is not the MPM zone's; enlarge Hybrid/Zone min and Zone max" +
                        std::string(solver.scene().hybrid.adaptive.enabled
                                      ? " or Hybrid/Adaptive zone reach, or lower the Adaptive "
@@ -376,11 +380,14 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                       {"energy_change_J", c.energy_after - c.energy_before},
                       {"momentum_change_kg_m_s", (c.momentum_after - c.momentum_before).norm()},
                       {"flagged_by_cause", flagged_by_cause(c.flagged)}});
+    const bool total_rule =
+      split.hybrid.adaptive.failure == fem::FailureProximity::total_failure;
     coupling::ZoneFlags flagged{};
     for (const coupling::ZoneConversion& c : solver.conversions())
       for (int k = 0; k < coupling::n_zone_causes; ++k)
         flagged[k] += c.flagged[k];
     summary["hybrid"]["adaptive_zone"] = {{"conversions", list},
+                                          {"failure", total_rule ? "total" : "any"},
                                           {"flagged_by_cause", flagged_by_cause(flagged)},
                                           {"time_averaged_zone_fraction",
                                            solver.time_averaged_zone_fraction()},

@@ -113,8 +113,8 @@ TEST(ZoneCriteria, AUniformShearConvertsOnTheDistortionBoundOnly)
   EXPECT_GT(sheared->time_averaged_zone_fraction(), std::pow(4.0 / 12.0, 3));
 }
 
-// The paper's tissue with its failure, fibres along x, sheared at 1000/s in the x-y plane
-// about the block's centre (the fibres keep their length) and compressed at 100/s along z:
+// The paper's tissue with its failure, fibers along x, sheared at 1000/s in the x-y plane
+// about the block's centre (the fibers keep their length) and compressed at 100/s along z:
 // the matrix shear bound reaches its limit about 0.45 ms in, and by 0.6 ms every point's
 // matrix has failed and carries the compressed volume's pressure alone.
 TEST(ZoneCriteria, MatrixFailureConvertsUnderTheAnyRuleAndStaysInTheFarFieldUnderTheTotalRule)
@@ -135,7 +135,9 @@ TEST(ZoneCriteria, MatrixFailureConvertsUnderTheAnyRuleAndStaysInTheFarFieldUnde
   ASSERT_FALSE(any->conversions().empty());
   EXPECT_GT(flagged(*any, ZoneCause::failure), 0u);
 
+  // The distortion bound the total rule needs, above the shear's ln(1.34 / 0.74) = 0.59.
   rules.failure = fem::FailureProximity::total_failure;
+  rules.distortion = 1.0;
   auto total = moving_block(v0, L, rules, &tissue);
   run_to(*total, 6e-4);
   EXPECT_TRUE(total->conversions().empty());
@@ -156,7 +158,7 @@ TEST(ZoneCriteria, MatrixFailureConvertsUnderTheAnyRuleAndStaysInTheFarFieldUnde
             1e-9 * pressure);
 
   // Waves from the zone's boundary disturb the affine motion; the cells whose stress is a
-  // pressure alone (no fibre stretched, every point failed) carry the law's, on average.
+  // pressure alone (no fiber stretched, every point failed) carry the law's, on average.
   const fem::FeMeshForOutput mesh = fe.mesh_for_output();
   std::size_t matrix_failed_cells = 0, pressure_only = 0;
   double fe_pressure = 0.0;
@@ -183,7 +185,8 @@ TEST(ZoneCriteria, MatrixFailureConvertsUnderTheAnyRuleAndStaysInTheFarFieldUnde
   EXPECT_NEAR(fe_pressure / pressure_only, pressure, 0.02 * pressure);
 
   // The MPM zone's matrix-failed points, under the same law, carry the same mean pressure
-  // within their noise (their failure released the matrix's stress at once).
+  // within their noise (their failure released the matrix's stress at once). Both bounds are
+  // measured margins: 1.4 % for the far field's cells, 6.4 % for the points.
   const mpm::Particles& points = total->mpm().points();
   double mpm_pressure = 0.0;
   std::size_t n_matrix_failed = 0;
