@@ -207,19 +207,12 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                  // loop nested in two lambdas.
                  const std::vector<Vector3>& velocity_new = fields.velocity_new;
                  const std::vector<Vector3>& velocity_for_gradient = gradient_velocity;
-                 // APIC's affine velocity is the gradient of the field the points' velocities
-                 // were read from, v^(n+1): then a rigid rotation scatters back to itself. Under
-                 // MUSL that is not the re-projected field L is taken from, whose nodes carry the
-                 // mass-weighted mean of their points' positions, not their own, and which takes
-                 // a spinning block's rotation at its edges.
-                 const bool separate_affine = affine && &gradient_velocity != &velocity_new;
 #pragma omp parallel for schedule(static)
                  for (long p = begin; p < end; ++p)
                  {
                    Tensor2& F = particles.deformation_gradient[p];
                    const Vector3 x_start = particles.position[p];
                    Tensor2 L = Tensor2::Zero();
-                   Tensor2 affine_velocity = Tensor2::Zero();
                    Vector3 v = Vector3::Zero();
                    double radial_velocity = 0.0;
                    for_each_node<shape>(
@@ -228,17 +221,16 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                        {
                          const std::size_t e = grid.slot(key) * n_bodies + b;
                          L.noalias() += velocity_for_gradient[e] * grad_w.transpose();
-                         if (separate_affine)
-                           affine_velocity.noalias() += velocity_new[e] * grad_w.transpose();
                          v += w * velocity_new[e];
                          radial_velocity += w * velocity_for_gradient[e][0];
                        });
                    particles.position[p] += dt * v;
-                   // The hoop rate is left out of the affine velocity: the nodes across the
-                   // hoop direction are one ring.
+                   // APIC's affine velocity is this L: for MUSL from the re-projected
+                   // velocities, mass-weighted means of point velocities, so a light node's
+                   // v + dt f / m never reaches the scatter through it. Its hoop rate is left
+                   // out: the nodes across the hoop direction are one ring.
                    if (affine)
-                     particles.affine_velocity[p] =
-                       (separate_affine ? affine_velocity : L).cast<float>();
+                     particles.affine_velocity[p] = L.cast<float>();
                    if (axisymmetric)
                      L(2, 2) = radial_velocity / x_start[0];
                    const bool failed = particles.failure[p] != 0;

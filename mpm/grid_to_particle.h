@@ -22,7 +22,7 @@ struct KinematicsSettings
   double flip_fraction = 1.0; ///< 1: pure FLIP (velocity increments), 0: pure PIC
   /// Per body, overriding flip_fraction where given (empty: flip_fraction for every body).
   std::vector<double> body_flip_fraction;
-  /// APIC: the deformation pass stores the gradient of v^(n+1) as C_p, the affine part of
+  /// APIC: the deformation pass stores its velocity gradient L as C_p, the affine part of
   /// the next scatter; with flip_fraction > 0 the velocity is the FLIP-APIC blend.
   bool affine = false;
   DeformationUpdate deformation_update = DeformationUpdate::midpoint;
