@@ -108,7 +108,9 @@ WoundMetrics compute_wound_metrics(const std::vector<Vector3>& x, const std::vec
 
   const double h = g.cell_size;
   const std::size_t n_slices =
-    std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(m.path.length() / h - 1e-9)));
+    // The box comes from single-precision reference positions: a 10 mm slab reads 10.0000002 mm,
+    // which must not add an empty slice to the tract (it lowered the mean area by 1/n_slices).
+    std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(m.path.length() / h - 1e-4)));
   m.tract_depth.resize(n_slices);
   m.tract_area.assign(n_slices, 0.0);
   m.debris_tract_area.assign(n_slices, 0.0);

@@ -1,6 +1,7 @@
 // Wound metrics on synthetic point sets with known answers: a circular cylinder of failed
 // points (its diameter, aspect ratio 1), an elliptic cylinder (its axes ratio), a cone (area
-// growing with depth), volumes by failure type, and face wounds in a layer of fixed depth.
+// growing with depth), volumes by failure type, face wounds in a layer of fixed depth, and a
+// slab whose box reads a little thick in single precision.
 #include "analysis/wound_metrics.h"
 #include "point_set.h"
 
@@ -283,4 +284,27 @@ TEST(WoundMetrics, DebrisMeansNoDeviatoricStressToRounding)
   EXPECT_FALSE(carries_no_deviatoric_stress(stress));
   stress << -3e5, -3e5, -3e5, 0, 0.3, 0;
   EXPECT_FALSE(carries_no_deviatoric_stress(stress));
+}
+
+// The run's target box comes from single-precision reference positions: a 10 mm slab can read
+// 10.0000002 mm. That must not add an empty slice, which would lower the tract's mean area by
+// a cell-dependent share (1/11 at 1 mm).
+TEST(WoundMetrics, ASlabReadInSinglePrecisionHasNoEmptyLastSlice)
+{
+  const double radius = 3e-3, s = 0.5e-3;
+  const PointSet set = slab(s, [&](const Vector3& p) {
+    return std::uint8_t(p[0] * p[0] + p[2] * p[2] < radius * radius ? 3 : 0);
+  });
+  WoundGeometry g = normal_shot();
+  g.box_upper[1] = 10e-3 + 2e-10; // as the coarse water slab read
+  ASSERT_GT(g.box_upper[1], 10e-3);
+  const WoundMetrics m = compute_wound_metrics(set.x, set.volume, set.flags, g);
+  ASSERT_EQ(m.tract_area.size(), 10u);
+  double total = 0.0;
+  for (std::size_t p = 0; p < set.x.size(); ++p)
+    total += set.flags[p] == 3 ? set.volume[p] : 0.0;
+  double mean = 0.0;
+  for (const double area : m.tract_area)
+    mean += area / m.tract_area.size();
+  EXPECT_NEAR(mean, total / 10e-3, 1e-9 * total / 10e-3);
 }
