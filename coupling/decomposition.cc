@@ -181,12 +181,12 @@ std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& sc
   if (adaptive.enabled && !(adaptive.threshold > 0.0 && adaptive.threshold <= 1.0))
     problems.push_back({{"adaptive.threshold"}, "outside (0, 1]",
                         "a fraction of the failure limits, about 0.5"});
-  if (adaptive.failure == fem::FailureProximity::total_failure && !adaptive.enabled)
+  if (adaptive.total_failure_rule() && !adaptive.enabled)
     problems.push_back({{"adaptive.failure"}, "total without an adaptive zone",
                         "set Hybrid/Adaptive zone = true, or Adaptive zone failure = any"});
   // A matrix-failed tissue point resists neither shear nor tension (unless its fibres are
   // stretched): a far-field cell of them must convert before it inverts.
-  if (adaptive.enabled && adaptive.failure == fem::FailureProximity::total_failure &&
+  if (adaptive.enabled && adaptive.total_failure_rule() &&
       !(adaptive.distortion > 0.0) && !(adaptive.jacobian_ratio > 0.0))
     problems.push_back({{"adaptive.failure"},
                         "total with neither cell-motion rule on: a far-field cell whose matrix "

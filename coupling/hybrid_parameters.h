@@ -53,6 +53,8 @@ struct AdaptiveZoneParameters
   /// Of which failure: any (matrix or fibers; a point that failed at all converts its cell),
   /// or total (both; the far field carries partial failure, fem::FailureProximity).
   fem::FailureProximity failure = fem::FailureProximity::any_failure;
+  /// Whether the far field carries partial failure and counts total failures only.
+  bool total_failure_rule() const { return failure == fem::FailureProximity::total_failure; }
   /// A cell also converts when an interface node of it has moved this fraction of a grid
   /// cell (the shared grid node stays put: the coupling assumes small interface motion):
   /// its whole displacement, or its departure from its cell's best-fit affine motion, which

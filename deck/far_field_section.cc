@@ -57,6 +57,10 @@ void declare_far_field_section(EntryTable& table)
                 "spacing at the interface (or is uniform at Grid/Cell size without a zone).");
   table.declare("Grading ratio", "1.3", Patterns::Double(1.0),
                 "Size ratio of neighbouring cells growing away from the zone, >= 1.");
+  table.declare("Supported face cells", "2", Patterns::Double(0.0),
+                "Width of the cells at a fixed or roller slab face, in grid cells (>= 1): the "
+                "graded cells shrink back to it towards such a face, so that its reaction is "
+                "resolved; 0: the cells grow on to the face.");
   table.declare("Newton tolerance", "1e-8", Patterns::Double(0.0, 1.0),
                 "Implicit: relative residual tolerance of Newton's method.");
   table.declare("Maximum Newton iterations", "25", Patterns::Integer(1, 1000),
@@ -120,6 +124,7 @@ void parse_far_field_section(dealii::ParameterHandler& prm, RunParameters& param
   f.spectral_radius = prm.get_double("Spectral radius");
   f.far_cell_size = prm.get_double("Far cell size");
   f.grading_ratio = prm.get_double("Grading ratio");
+  f.supported_face_cells = prm.get_double("Supported face cells");
   f.newton_relative_tolerance = prm.get_double("Newton tolerance");
   f.max_newton_iterations = static_cast<unsigned int>(prm.get_integer("Maximum Newton iterations"));
   const std::string linear_solver = prm.get("Linear solver");

@@ -42,6 +42,7 @@ std::string entry_of(std::string parameter, const std::string& body)
     {"spectral_radius", "Far field/Spectral radius"},
     {"far_cell_size", "Far field/Far cell size"},
     {"grading_ratio", "Far field/Grading ratio"},
+    {"supported_face_cells", "Far field/Supported face cells"},
     {"faces.profile.duration", "Far field/Load duration"},
     {"interface_cell_size", "Grid/Cell size"},
     {"end_time", "Time/End time"},

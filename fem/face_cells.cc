@@ -1,5 +1,5 @@
-// The coarsest far-field cell touching each slab face: the supports' reactions there are only
-// as resolved as those cells (docs/far_field.md section 2, "Coarse cells at a support").
+// The widest far-field cell across each slab face: a support's reaction is only as resolved as
+// the cells' widths along its normal (docs/far_field.md section 2, "Cells at a support").
 #include "fem/far_field_data.h"
 
 #include <deal.II/base/bounding_box.h>
@@ -20,12 +20,9 @@ std::array<double, n_slab_faces> FarFieldSolver::coarsest_cells_on_faces() const
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() < n_slab_faces)
         {
-          const BoundingBox<3> box = cell->bounding_box();
-          double largest = 0.0;
-          for (unsigned int c = 0; c < 3; ++c)
-            largest = std::max(largest, box.side_length(c));
-          double& face = coarsest[cell->face(f)->boundary_id()];
-          face = std::max(face, largest);
+          const types::boundary_id id = cell->face(f)->boundary_id();
+          const double across = cell->bounding_box().side_length(id / 2);
+          coarsest[id] = std::max(coarsest[id], across);
         }
   for (double& face : coarsest)
     face = Utilities::MPI::max(face, d.comm);

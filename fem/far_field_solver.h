@@ -186,8 +186,9 @@ public:
   /// The shortest time a wave takes to cross a cell at the current state, min h / c over the
   /// live cells (all ranks), s; infinity when no cell has a positive wave speed.
   double shortest_wave_transit() const;
-  /// The largest edge of the live cells with a face on each slab face (all ranks), m: the
-  /// supports' reactions there resolve no wave shorter than a few of these.
+  /// The widest live cell across each slab face (its extent along the face's normal) among
+  /// the cells with a face on it (all ranks), m: a support's reaction carries the error of
+  /// those widths (docs/far_field.md section 2).
   std::array<double, n_slab_faces> coarsest_cells_on_faces() const;
   /// Advances by dt with the configured integrator. Throws std::runtime_error when an
   /// element inverts or Newton does not converge (the state is then unchanged).

@@ -64,6 +64,10 @@ std::vector<ParameterProblem> check_parameters(const FeSceneParameters& p)
         "give a size >= the interface cell size");
   if (!(p.grading_ratio >= 1.0 && p.grading_ratio <= 4.0))
     add({"grading_ratio"}, number(p.grading_ratio) + " outside [1, 4]", "use about 1.2-1.5");
+  if (!(p.supported_face_cells == 0.0 || p.supported_face_cells >= 1.0))
+    add({"supported_face_cells"}, number(p.supported_face_cells) + " is neither 0 nor >= 1",
+        "give 0 (cells grow on to the face) or the face cells' width in grid cells, "
+        "about 1-2");
   if (p.has_hole && h > 0.0)
     for (unsigned int d = 0; d < 3; ++d)
     {

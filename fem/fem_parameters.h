@@ -136,6 +136,10 @@ struct FeSceneParameters
   double far_cell_size = 4.0e-3;
   /// Ratio of the sizes of neighbouring cells away from the hole, >= 1.
   double grading_ratio = 1.3;
+  /// Width of the cells next to a fixed or roller slab face, in interface cells: the grading
+  /// shrinks back to it toward such a face, so that the face's reaction is resolved
+  /// (docs/far_field.md section 2). 0: the cells grow on to the face.
+  double supported_face_cells = 0.0;
   /// Uniform refinements of the graded mesh (convergence studies; creates no hanging nodes).
   unsigned int n_global_refinements = 0;
 

@@ -1,5 +1,6 @@
 // Graded slab mesh with a box hole: GridGenerator::subdivided_hyper_rectangle with graded step
-// sizes and deleted hole cells (no hanging nodes), boundary ids from face positions.
+// sizes (shrinking back towards supported faces when asked) and deleted hole cells (no hanging
+// nodes), boundary ids from face positions.
 #include "fem/mesh_builder.h"
 
 #include <deal.II/base/table.h>
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -15,48 +17,87 @@ namespace vulnus::fem
 {
 namespace
 {
-/// Widths of cells growing from h * ratio by `ratio` up to h_far, covering exactly `length`.
+/// Widths of cells growing from h * ratio by `ratio` up to h_far, covering exactly `length`,
+/// in order away from the focus. With h_face > 0 the cells also grow by `ratio` from h_face at
+/// the far end, the smaller of the two candidates taken next: the side shrinks back towards a
+/// supported face.
 std::vector<double> growing_side(const double length, const double h, const double h_far,
-                                 const double ratio)
+                                 const double ratio, const double h_face)
 {
-  std::vector<double> widths;
+  std::vector<double> near, far;
   if (length <= 1e-9 * h)
-    return widths;
+    return near;
+  const bool to_face = h_face > 0.0;
   double sum = 0.0;
-  double w = h;
+  double w_near = h;
+  double w_far = std::min(h_face, h_far) / ratio;
+  bool last_far = false;
   while (sum < length)
   {
-    w = std::min(w * ratio, h_far);
-    widths.push_back(w);
-    sum += w;
+    const double a = std::min(w_near * ratio, h_far);
+    const double b = std::min(w_far * ratio, h_far);
+    last_far = to_face && b < a;
+    if (last_far)
+      far.push_back(w_far = b);
+    else
+      near.push_back(w_near = a);
+    sum += last_far ? b : a;
   }
-  // Drop the last cell if the rest is closer to the length without it; then scale.
-  if (widths.size() > 1 && sum - length > 0.5 * widths.back())
+  // The cells are scaled to the length, with or without the last one: without it if the rest
+  // is closer to the length; towards a face, by which choice scales its cells less far past
+  // their bounds (the face cell above h_face, any cell below h).
+  std::vector<double>& last = last_far ? far : near;
+  if (near.size() + far.size() > 1)
   {
-    sum -= widths.back();
-    widths.pop_back();
+    const double x = last.back();
+    bool drop = sum - length > 0.5 * x;
+    if (to_face)
+    {
+      const auto excess = [&](const double total) {
+        const double k = length / total;
+        double smallest = std::numeric_limits<double>::max();
+        for (const std::vector<double>* cells : {&near, &far})
+          for (const double w : *cells)
+            smallest = std::min(smallest, w);
+        const double face = far.empty() ? near.back() : far.front();
+        return std::max(face * k / h_face - 1.0, 0.0) + std::max(1.0 - smallest * k / h, 0.0);
+      };
+      const double kept = excess(sum);
+      last.pop_back();
+      const double dropped = excess(sum - x);
+      last.push_back(x);
+      if (kept != dropped)
+        drop = dropped < kept;
+    }
+    if (drop)
+    {
+      sum -= x;
+      last.pop_back();
+    }
   }
-  for (double& x : widths)
-    x *= length / sum;
-  return widths;
+  near.insert(near.end(), far.rbegin(), far.rend());
+  for (double& w : near)
+    w *= length / sum;
+  return near;
 }
 } // namespace
 
 std::vector<double> graded_step_sizes(const double lo, const double hi, const double focus_lo,
                                       const double focus_hi, const double h, const double h_far,
-                                      const double ratio)
+                                      const double ratio, const double h_face_lo,
+                                      const double h_face_hi)
 {
   if (!(focus_hi > focus_lo))
   {
     const unsigned int n = std::max(1u, static_cast<unsigned int>(std::lround((hi - lo) / h)));
     return std::vector<double>(n, (hi - lo) / n);
   }
-  std::vector<double> steps = growing_side(focus_lo - lo, h, h_far, ratio);
+  std::vector<double> steps = growing_side(focus_lo - lo, h, h_far, ratio, h_face_lo);
   std::reverse(steps.begin(), steps.end());
   const unsigned int n_focus =
       std::max(1u, static_cast<unsigned int>(std::lround((focus_hi - focus_lo) / h)));
   steps.insert(steps.end(), n_focus, (focus_hi - focus_lo) / n_focus);
-  const std::vector<double> right = growing_side(hi - focus_hi, h, h_far, ratio);
+  const std::vector<double> right = growing_side(hi - focus_hi, h, h_far, ratio, h_face_hi);
   steps.insert(steps.end(), right.begin(), right.end());
   return steps;
 }
@@ -71,8 +112,15 @@ void build_slab_mesh(const FeSceneParameters& p, dealii::Triangulation<3, 3>& tr
   {
     const double focus_lo = p.has_focus ? p.focus_min[d] : (p.has_hole ? p.hole_min[d] : 0.0);
     const double focus_hi = p.has_focus ? p.focus_max[d] : (p.has_hole ? p.hole_max[d] : 0.0);
+    const auto face_cell = [&](const unsigned int f) {
+      const FaceParameters::Condition c = p.faces[f].condition;
+      const bool supported =
+        c == FaceParameters::Condition::fixed || c == FaceParameters::Condition::roller;
+      return supported ? p.supported_face_cells * p.interface_cell_size : 0.0;
+    };
     steps[d] = graded_step_sizes(p.slab_min[d], p.slab_max[d], focus_lo, focus_hi,
-                                 p.interface_cell_size, p.far_cell_size, p.grading_ratio);
+                                 p.interface_cell_size, p.far_cell_size, p.grading_ratio,
+                                 face_cell(2 * d), face_cell(2 * d + 1));
     double x = p.slab_min[d];
     for (const double w : steps[d])
     {

@@ -167,7 +167,7 @@ SUMMARY = [
     ("supports.<face>", "-", "One face."),
     ("supports.<face>.condition", "-", "MPM and hybrid runs: `fixed`, `roller` or `free` (axisymmetric runs: `axis (v_r = 0)`, `hoop direction (no velocity across the plane)`, and `(the surface r = R)` on x+), with ` (no body reached it)` for a fixed or roller face that gave no impulse and that no deformable body came within a cell of at the start."),
     ("supports.<face>.impulse_N_s", "N s", "Impulse the face's supports gave the bodies since the start, `[x, y, z]` (hybrid: MPM zone and far field together)."),
-    ("supports.<face>.far_field_cell_m", "m", "Hybrid runs, fixed and roller faces: the coarsest far-field cell on the face."),
+    ("supports.<face>.far_field_cell_m", "m", "Hybrid runs, fixed and roller faces: the widest far-field cell across the face (along its normal) among those on it."),
     ("supports.<face>.far_field_cell_over_grid_cell", "-", "That cell over the MPM grid's cell."),
     ("supports.<face>.far_field_resolves_impulse", "-", "Whether that ratio is within the bound under which the face's impulse is compared (the run warns otherwise)."),
     ("supports.<face>.normal_impulse_late_mean_N_s", "N s", "Time-mean over `supports_late_window_s` of the face's impulse along its normal axis (history.csv `support_impulse_<face>`, linear between rows)."),

@@ -64,7 +64,7 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
   if (split.hybrid.adaptive.enabled)
     o << "; adaptive zone: cells convert at " << split.hybrid.adaptive.threshold
       << " of the failure limits"
-      << (split.hybrid.adaptive.failure == fem::FailureProximity::total_failure
+      << (split.hybrid.adaptive.total_failure_rule()
             ? " of a point's last intact part (the far field carries partial failure)"
             : "")
       << ", with " << split.hybrid.adaptive.margin_cells
@@ -210,8 +210,7 @@ std::vector<std::string> HybridStepper::final_warnings() const
   const unsigned long long failed = solver.fe().diagnostics().n_failed_points; // collective
   if (failed > 0)
     warnings.push_back("*** " + std::to_string(failed) + " FE quadrature points failed" +
-                       (solver.scene().hybrid.adaptive.failure ==
-                            fem::FailureProximity::total_failure
+                       (solver.scene().hybrid.adaptive.total_failure_rule()
                           ? std::string(" totally")
                           : std::string()) +
                        ": the wound reached the far field, whose "
@@ -380,8 +379,7 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
                       {"energy_change_J", c.energy_after - c.energy_before},
                       {"momentum_change_kg_m_s", (c.momentum_after - c.momentum_before).norm()},
                       {"flagged_by_cause", flagged_by_cause(c.flagged)}});
-    const bool total_rule =
-      split.hybrid.adaptive.failure == fem::FailureProximity::total_failure;
+    const bool total_rule = split.hybrid.adaptive.total_failure_rule();
     coupling::ZoneFlags flagged{};
     for (const coupling::ZoneConversion& c : solver.conversions())
       for (int k = 0; k < coupling::n_zone_causes; ++k)

@@ -42,11 +42,13 @@ std::vector<std::string> support_resolution_warnings(const std::array<FaceResolu
   if (worst == 0.0)
     return {};
   std::ostringstream o;
-  o << "*** the far field's cells on the supported face(s) " << names.str() << " are coarser "
-    << "than " << supported_face_cell_bound << " grid cells (largest " << worst << " m): "
-    << "their support impulses carry the coarse cells' error (measured +6 % at 2.5 and +17 % "
-    << "at 4 grid cells against pure MPM, docs/far_field.md section 2); set Far field/Far "
-    << "cell size <= " << supported_face_cell_bound * grid_cell << " m for supports to compare";
+  o << "*** the far field's cells on the supported face(s) " << names.str() << " are wider "
+    << "across the face than " << supported_face_cell_bound << " grid cells (widest " << worst
+    << " m): their support impulses carry the coarse cells' error (measured +6 % at 2.5 and "
+    << "+17 % at 4 grid cells against pure MPM, docs/far_field.md section 2); set Far "
+    << "field/Supported face cells <= " << supported_face_cell_bound
+    << " (or Far cell size <= " << supported_face_cell_bound * grid_cell
+    << " m) for supports to compare";
   return {o.str()};
 }
 } // namespace vulnus::simulator

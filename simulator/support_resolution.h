@@ -1,7 +1,7 @@
-// Whether a hybrid run's far field resolves its supports' reactions: the coarsest far-field
-// cell on each fixed or roller face against the MPM grid's cell. Coarser cells there than the
+// Whether a hybrid run's far field resolves its supports' reactions: the widest far-field cell
+// across each fixed or roller face against the MPM grid's cell. Wider cells there than the
 // bound carry a discretisation error into that face's impulse that nothing else shows (docs/
-// far_field.md section 2, "Coarse cells at a support").
+// far_field.md section 2, "Cells at a support").
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -12,8 +12,9 @@
 
 namespace vulnus::simulator
 {
-/// Largest far-field cell on a supported face, in grid cells, whose impulse is still reported
-/// as resolved (measured: +2 % against pure MPM at 2 cells, +6 % at 2.5, +17 % at 4).
+/// Widest far-field cell across a supported face, in grid cells, whose impulse is still
+/// reported as resolved (measured: +2 % against pure MPM at 2 cells, +6 % at 2.5, +17 % at 4;
+/// the cells' width along the face does not matter: +0.5 % at 1.5 across and 3 along).
 inline constexpr double supported_face_cell_bound = 2.0;
 
 struct FaceResolution

@@ -127,7 +127,7 @@ TEST(FeSupportEdges, EachFaceBooksItsNormalReactionAtTheEdge)
 
 // The coarsest cell on each slab face: the graded cells' largest width on the faces they
 // reach (the hole's sides grow from 1 mm by 2 up to 4 mm), the uniform cell elsewhere.
-TEST(FeSupportEdges, CoarsestCellsOnTheFacesAreTheGradedOnes)
+TEST(FeSupportEdges, WidestCellsAcrossTheFacesAreTheGradedOnes)
 {
   FeSceneParameters p;
   p.slab_min = {{0.0, 0.0, 0.0}};
@@ -144,10 +144,18 @@ TEST(FeSupportEdges, CoarsestCellsOnTheFacesAreTheGradedOnes)
     graded_step_sizes(0.0, 0.024, 0.009, 0.015, 0.001, 0.004, 2.0);
   const double coarsest = *std::max_element(steps.begin(), steps.end());
   EXPECT_GT(coarsest, 3e-3);
+  EXPECT_NEAR(steps.front(), coarsest, 1e-12);
+  EXPECT_NEAR(steps.back(), coarsest, 1e-12);
+  // Across the x and z faces the widest cells are the graded ones; across the y faces (the
+  // hole spans the thickness) the cells are the interface's, whatever their width along.
   const std::array<double, n_slab_faces> cells = solver.coarsest_cells_on_faces();
-  for (unsigned int b = 0; b < n_slab_faces; ++b)
+  for (const unsigned int b : {0u, 1u, 4u, 5u})
   {
     EXPECT_NEAR(cells[b], coarsest, 1e-12) << "face " << b;
+  }
+  for (const unsigned int b : {2u, 3u})
+  {
+    EXPECT_NEAR(cells[b], 0.001, 1e-12) << "face " << b;
   }
   p.far_cell_size = 0.001;
   FarFieldSolver uniform(p, MPI_COMM_WORLD);
@@ -156,6 +164,78 @@ TEST(FeSupportEdges, CoarsestCellsOnTheFacesAreTheGradedOnes)
   {
     EXPECT_NEAR(cell, 0.001, 1e-12);
   }
+}
+
+TEST(FeSupportEdges, GradedCellsShrinkBackToASupportedFace)
+{
+  // x in [0, 50] mm, the fine focus [20, 30] mm of 1 mm cells, growing by 1.3 up to 4 mm.
+  const double h = 0.001, h_far = 0.004, ratio = 1.3;
+  const std::vector<double> open = graded_step_sizes(0.0, 0.05, 0.02, 0.03, h, h_far, ratio);
+  for (const double h_face : {0.001, 0.002})
+  {
+    const std::vector<double> steps =
+      graded_step_sizes(0.0, 0.05, 0.02, 0.03, h, h_far, ratio, h_face, h_face);
+    double sum = 0.0;
+    for (const double w : steps)
+    {
+      sum += w;
+      EXPECT_LE(w, h_far * (1.0 + 1e-9));
+      EXPECT_GE(w, 0.9 * h); // a face cell of h may be scaled a little below it
+    }
+    EXPECT_NEAR(sum, 0.05, 1e-15);
+    EXPECT_LE(steps.front(), h_face * (1.0 + 1e-9)) << "face cell " << h_face;
+    EXPECT_LE(steps.back(), h_face * (1.0 + 1e-9)) << "face cell " << h_face;
+    // Neighbours differ by at most the ratio and the side's scaling to its length.
+    for (std::size_t i = 1; i < steps.size(); ++i)
+    {
+      EXPECT_LE(std::max(steps[i] / steps[i - 1], steps[i - 1] / steps[i]), ratio * 1.25)
+        << "cells " << i - 1 << " and " << i << " with face cell " << h_face;
+    }
+    EXPECT_GT(steps.size(), open.size()) << "face cell " << h_face;
+  }
+  EXPECT_GT(open.front(), 0.003);
+
+  // Every side from 1 to 60 mm at the deck's grading (1.3, face cells of 2): exact length,
+  // no cell below 0.95 h or above h_far, the face cell at most 5 % past its width (a side of
+  // one or two cells cannot match both ends).
+  for (int tenths = 10; tenths <= 600; ++tenths)
+  {
+    const double side = 1e-4 * tenths;
+    const std::vector<double> steps =
+      graded_step_sizes(0.0, 0.01 + side, 0.0, 0.01, h, h_far, ratio, 0.0, 2 * h);
+    double sum = 0.0;
+    for (const double w : steps)
+    {
+      sum += w;
+      EXPECT_GE(w, 0.95 * h) << "side " << side;
+      EXPECT_LE(w, h_far * (1.0 + 1e-9)) << "side " << side;
+    }
+    EXPECT_NEAR(sum, 0.01 + side, 1e-14);
+    EXPECT_LE(steps.back(), 1.05 * 2 * h) << "side " << side;
+  }
+
+  // Only fixed and roller faces shrink: x- fixed, x+ roller, the y and z faces free.
+  FeSceneParameters p;
+  p.slab_min = {{0.0, 0.0, 0.0}};
+  p.slab_max = {{0.05, 0.004, 0.05}};
+  p.has_hole = true;
+  p.hole_min = {{0.02, 0.0, 0.02}};
+  p.hole_max = {{0.03, 0.004, 0.03}};
+  p.interface_cell_size = h;
+  p.far_cell_size = h_far;
+  p.grading_ratio = ratio;
+  p.supported_face_cells = 2.0;
+  p.faces[0].condition = FaceParameters::Condition::fixed;
+  p.faces[1].condition = FaceParameters::Condition::roller;
+  for (unsigned int f = 2; f < n_slab_faces; ++f)
+    p.faces[f].condition = FaceParameters::Condition::free;
+  FarFieldSolver solver(p, MPI_COMM_WORLD);
+  solver.setup();
+  const std::size_t nx =
+    graded_step_sizes(0.0, 0.05, 0.02, 0.03, h, h_far, ratio, 2 * h, 2 * h).size();
+  const std::size_t ny = graded_step_sizes(0.0, 0.004, 0.0, 0.004, h, h_far, ratio).size();
+  const std::size_t nz = open.size();
+  EXPECT_EQ(solver.n_active_cells(), nx * ny * nz - 10 * 4 * 10);
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, FeSupports,

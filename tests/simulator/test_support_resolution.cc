@@ -1,5 +1,5 @@
 // The supports' resolution rule of a hybrid run: a supported face whose far-field cells are
-// coarser than the bound in grid cells is flagged, by name, with the remedy; free faces and
+// wider across it than the bound in grid cells is flagged, by name, with the remedy; free faces and
 // faces the far field does not reach are not.
 #include "simulator/support_resolution.h"
 
@@ -28,7 +28,7 @@ TEST(SupportResolution, FlagsSupportedFacesWithCellsBeyondTheBound)
   EXPECT_NE(warnings[0].find("x- (2.54 grid cells), x+ (2.54 grid cells)"), std::string::npos)
     << warnings[0];
   EXPECT_EQ(warnings[0].find("z-"), std::string::npos) << warnings[0];
-  EXPECT_NE(warnings[0].find("Far field/Far cell size <= 0.002 m"), std::string::npos)
+  EXPECT_NE(warnings[0].find("Far field/Supported face cells <= 2"), std::string::npos)
     << warnings[0];
 }
 
