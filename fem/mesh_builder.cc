@@ -3,6 +3,8 @@
 // nodes), boundary ids from face positions.
 #include "fem/mesh_builder.h"
 
+#include "fem/face_support.h"
+
 #include <deal.II/base/table.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
@@ -113,10 +115,8 @@ void build_slab_mesh(const FeSceneParameters& p, dealii::Triangulation<3, 3>& tr
     const double focus_lo = p.has_focus ? p.focus_min[d] : (p.has_hole ? p.hole_min[d] : 0.0);
     const double focus_hi = p.has_focus ? p.focus_max[d] : (p.has_hole ? p.hole_max[d] : 0.0);
     const auto face_cell = [&](const unsigned int f) {
-      const FaceParameters::Condition c = p.faces[f].condition;
-      const bool supported =
-        c == FaceParameters::Condition::fixed || c == FaceParameters::Condition::roller;
-      return supported ? p.supported_face_cells * p.interface_cell_size : 0.0;
+      return is_support(p.faces[f].condition) ? p.supported_face_cells * p.interface_cell_size
+                                              : 0.0;
     };
     steps[d] = graded_step_sizes(p.slab_min[d], p.slab_max[d], focus_lo, focus_hi,
                                  p.interface_cell_size, p.far_cell_size, p.grading_ratio,

@@ -2,6 +2,7 @@
 #include "simulator/hybrid_stepper.h"
 
 #include "analysis/wound_sample.h"
+#include "fem/face_support.h"
 #include "io/run_directory.h"
 #include "simulator/hybrid_history.h"
 #include "simulator/rigid_hold_report.h"
@@ -195,10 +196,8 @@ std::array<FaceResolution, 6> far_field_support_resolution(const coupling::Hybri
   std::array<bool, 6> supported{};
   for (unsigned int f = 0; f < fem::n_slab_faces; ++f)
   {
-    using C = fem::FaceParameters::Condition;
-    const C c = solver.scene().fe.faces[f].condition;
     cells[f] = coarsest[f];
-    supported[f] = c == C::fixed || c == C::roller;
+    supported[f] = fem::is_support(solver.scene().fe.faces[f].condition);
   }
   return support_resolution(cells, supported, solver.scene().fe.interface_cell_size);
 }
