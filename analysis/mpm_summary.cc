@@ -1,6 +1,7 @@
 // Builds summary.json from the final MPM state.
 #include "analysis/mpm_summary.h"
 
+#include "analysis/penetration_resolution.h"
 #include "analysis/wound_metrics.h"
 #include "analysis/wound_resolution.h"
 #include "mpm/body_builder.h"
@@ -231,6 +232,12 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
         {"exceeded_step", rotation.exceeded_step() >= 0 ? nlohmann::json(rotation.exceeded_step())
                                                         : nlohmann::json()}};
     j["penetration"] = penetration_json(solver.penetration());
+    const PenetrationResolution resolution =
+      resolve_penetration(solver.scene().bodies[projectile], solver.scene().cell_size);
+    j["penetration"]["resolution"] = {
+      {"projectile_width_m", resolution.width_m}, {"cells_across", resolution.cells_across},
+      {"cells_needed", projectile_cells_needed}, {"resolved", resolution.resolved},
+      {"reason", resolution.resolved ? nlohmann::json() : nlohmann::json(resolution.reason)}};
     // Fastest point of the other bodies over the run, against the projectile's initial speed.
     double fastest = 0.0;
     for (std::size_t other = 0; other < solver.peak_point_speeds().size(); ++other)

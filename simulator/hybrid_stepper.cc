@@ -436,7 +436,7 @@ std::string HybridStepper::final_report(const nlohmann::json& summary) const
     o << bullet_report(summary);
     o << projectile_note(mpm_side);
   }
-  o << unresolved_wound_report(summary);
+  o << unresolved_wound_report(summary) << unresolved_penetration_report(summary);
   return o.str();
 }
 } // namespace vulnus::simulator

@@ -209,7 +209,7 @@ std::string MpmStepper::final_report(const nlohmann::json& summary) const
     o << bullet_report(summary);
     o << projectile_note(solver);
   }
-  o << unresolved_wound_report(summary);
+  o << unresolved_wound_report(summary) << unresolved_penetration_report(summary);
   return o.str();
 }
 
@@ -268,6 +268,18 @@ std::string unresolved_wound_report(const nlohmann::json& summary)
   for (const auto& name : (*it)["unresolved"])
     names += (names.empty() ? "" : ", ") + name.get<std::string>();
   return "\nwound figures not resolved at this cell (summary.json wound_resolution): " + names;
+}
+
+std::string unresolved_penetration_report(const nlohmann::json& summary)
+{
+  const auto it = summary.find("penetration");
+  if (it == summary.end() || !it->value("stopped", false) || !it->contains("resolution"))
+    return "";
+  const nlohmann::json& resolution = (*it)["resolution"];
+  if (resolution.value("resolved", true))
+    return "";
+  return "\npenetration depth not resolved at this cell (summary.json penetration.resolution): " +
+         resolution.value("reason", std::string());
 }
 
 std::string bullet_report(const nlohmann::json& summary)

@@ -30,6 +30,9 @@ std::string projectile_note(const mpm::Solver& solver);
 std::string bullet_report(const nlohmann::json& summary);
 /// "; wound figures not resolved at this cell: ..." from summary.json's wound_resolution, or "".
 std::string unresolved_wound_report(const nlohmann::json& summary);
+/// "\npenetration depth not resolved at this cell: ..." when the projectile stopped in the
+/// target and summary.json's penetration.resolution says its depth is not resolved, or "".
+std::string unresolved_penetration_report(const nlohmann::json& summary);
 
 /// "time step .., particle-to-grid .., ..., checks .." (s): where an MPM solver's time went.
 std::string phase_report(const mpm::PhaseTimes& times);

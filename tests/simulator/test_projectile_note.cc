@@ -21,3 +21,24 @@ TEST(ElasticProjectileNote, SilentWhenTheProjectileYieldsOrTheSubstepsAreCheap)
   EXPECT_EQ(elastic_projectile_note(30.0, 74.0, 0.04, "bullet"), ""); // under half the run
   EXPECT_EQ(elastic_projectile_note(0.0, 0.0, 0.0, "bullet"), "");    // nothing ran
 }
+
+// The closing line that names an unresolved penetration depth: only for a projectile that
+// stopped in the target, from summary.json's penetration.resolution.
+TEST(UnresolvedPenetrationReport, NamesTheDepthOfAStoppedProjectileBelowTheCellsNeeded)
+{
+  using vulnus::simulator::unresolved_penetration_report;
+  nlohmann::json summary = {
+    {"penetration",
+     {{"stopped", true},
+      {"resolution", {{"resolved", false}, {"reason", "the projectile spans 8.8 cells across"}}}}}};
+  const std::string line = unresolved_penetration_report(summary);
+  EXPECT_NE(line.find("penetration depth not resolved"), std::string::npos) << line;
+  EXPECT_NE(line.find("8.8 cells across"), std::string::npos) << line;
+
+  summary["penetration"]["stopped"] = false; // perforated, or still moving: no depth to judge
+  EXPECT_EQ(unresolved_penetration_report(summary), "");
+  summary["penetration"]["stopped"] = true;
+  summary["penetration"]["resolution"]["resolved"] = true;
+  EXPECT_EQ(unresolved_penetration_report(summary), "");
+  EXPECT_EQ(unresolved_penetration_report(nlohmann::json::object()), ""); // no projectile
+}
