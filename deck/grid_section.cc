@@ -46,7 +46,7 @@ void declare_grid_section(EntryTable& table)
                 "Stress update: USL (update stress last) or MUSL (modified USL, velocities "
                 "re-mapped to the grid before the stress update).");
   table.declare("Velocity transfer", "FLIP",
-                Patterns::Selection("relaxed PIC|relaxed APIC|APIC|FLIP|PIC|XPIC"),
+                Patterns::Selection("relaxed PIC|relaxed APIC|APIC|FLIP|PIC|XPIC|FMPM"),
                 "How points take their velocity from the grid: relaxed PIC (FLIP increments "
                 "relaxed towards the PIC velocity over the time in Velocity relaxation, a rate "
                 "fixed in time so the answer does not depend on the step count; hybrid runs "
@@ -58,10 +58,17 @@ void declare_grid_section(EntryTable& table)
                 "every mode the grid cannot hold) or XPIC (Hammerquist and Nairn 2017: PIC plus "
                 "the part of the points' velocities that a grid field fits, from XPIC order "
                 "terms of a series, so a rigid rotation or any motion the grid resolves passes "
-                "undamped while FLIP's noise is removed; pure MPM only).");
+                "undamped while FLIP's noise is removed; pure MPM only) or FMPM (Nairn and "
+                "Hammerquist 2021: PIC from the new grid velocities that the consistent mass "
+                "matrix gives, its inverse approximated by FMPM order terms of the same series; "
+                "no FLIP increments are carried, and each term is one more pass over the points; "
+                "pure MPM only).");
   table.declare("XPIC order", "5", Patterns::Integer(1, 20),
                 "XPIC: the number m of terms of its series (1 is PIC; each further term is one "
                 "more pass over the points) [-].");
+  table.declare("FMPM order", "5", Patterns::Integer(1, 20),
+                "FMPM: the number m of terms of the consistent mass matrix's series (1 is PIC; "
+                "each further term is one more pass over the points) [-].");
   table.declare("Velocity relaxation", "1", Patterns::Double(1e-3, 1e3),
                 "relaxed PIC and APIC: relaxation time tau of the FLIP part in Courant times h / max(c + "
                 "|v|) (the step at CFL 1) [-]; the FLIP fraction per step is exp(-dt / tau).");
@@ -121,10 +128,13 @@ void parse_grid_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
                             : transfer == "PIC"  ? mpm::VelocityTransfer::pic
                             : transfer == "APIC" ? mpm::VelocityTransfer::apic
                             : transfer == "XPIC" ? mpm::VelocityTransfer::xpic
+                            : transfer == "FMPM" ? mpm::VelocityTransfer::fmpm
                             : transfer == "relaxed PIC" ? mpm::VelocityTransfer::relaxed_pic
                                                  : mpm::VelocityTransfer::relaxed_apic;
   scene.velocity_relaxation = prm.get_double("Velocity relaxation");
-  scene.xpic_order = static_cast<int>(prm.get_integer("XPIC order"));
+  scene.series_order = static_cast<int>(
+      prm.get_integer(scene.velocity_transfer == mpm::VelocityTransfer::fmpm ? "FMPM order"
+                                                                             : "XPIC order"));
   scene.projectile_velocity_relaxation = prm.get_double("Projectile velocity relaxation");
   scene.deformation_update = prm.get("Deformation update") == "forward Euler"
                                  ? mpm::DeformationUpdate::forward_euler

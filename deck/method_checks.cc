@@ -140,10 +140,13 @@ std::vector<std::string> check_method(const RunParameters& parameters, const Ent
   }
   if (!parameters.hybrid.enabled)
     return out;
-  if (scene.velocity_transfer == mpm::VelocityTransfer::xpic)
+  if (scene.velocity_transfer == mpm::VelocityTransfer::xpic ||
+      scene.velocity_transfer == mpm::VelocityTransfer::fmpm)
     add(out, locator, {"Grid/Velocity transfer", "Hybrid/Enabled"},
-        "Grid/Velocity transfer = XPIC: the hybrid's interface exchange assumes FLIP velocity "
-        "increments at the shared nodes; use FLIP in a hybrid scene, or Hybrid/Enabled = false");
+        std::string("Grid/Velocity transfer = ") +
+          (scene.velocity_transfer == mpm::VelocityTransfer::xpic ? "XPIC" : "FMPM") +
+          ": the hybrid's interface exchange assumes FLIP velocity increments at the shared "
+          "nodes; use FLIP in a hybrid scene, or Hybrid/Enabled = false");
   const int split = coupling::split_body_index(scene, parameters.hybrid);
   const std::string body = split >= 0 ? scene.bodies[split].name : "";
   for (const ParameterProblem& p :

@@ -52,7 +52,10 @@ std::array<int, 3> Grid::node_ijk(const std::int64_t key) const
 Vector3 Grid::node_position(const std::int64_t key) const
 {
   const auto ijk = node_ijk(key);
-  return domain_min + h * Vector3(ijk[0], ijk[1], ijk[2]);
+  Vector3 x = domain_min + h * Vector3(ijk[0], ijk[1], ijk[2]);
+  if (of_revolution) // a node of the r-y plane stands for its ring, in the plane z = 0
+    x[2] = 0.0;
+  return x;
 }
 
 std::size_t Grid::number_active_nodes(const int n_shares)

@@ -29,13 +29,13 @@ void mark_active_nodes(const Particles& particles, const TransferSettings& setti
             settings.shape == ShapeFunction::linear ? 0.0 : settings.half_size_cells[b];
         std::array<int, 3> previous{{0, 0, 0}};
         bool marked_any = false;
-        auto mark_block = [&](const std::array<int, 3>& first, const int width)
+        auto mark_block = [&](const std::array<int, 3>& first, const int width, const int depth)
         {
           if (marked_any && first == previous)
             return;
           marked_any = true;
           previous = first;
-          for (int k = 0; k < width; ++k)
+          for (int k = 0; k < depth; ++k)
             for (int j = 0; j < width; ++j)
               for (int i = 0; i < width; ++i)
                 grid.mark(grid.node_key(first[0] + i, first[1] + j, first[2] + k), share);

@@ -41,7 +41,10 @@ enum class VelocityTransfer
   pic,  ///< v_p = sum w v_i: damps every mode the grid cannot hold, including rotation
   /// XPIC(m) (mpm/xpic.h): PIC plus the part of the points' velocities a grid field fits,
   /// from m terms of a series; removes FLIP's noise without PIC's damping of resolved motion
-  xpic
+  xpic,
+  /// FMPM(m) (mpm/xpic.h): PIC from the new grid velocities the consistent mass matrix would
+  /// give, its inverse approximated by m terms of the same series; no FLIP memory
+  fmpm
 };
 
 /// How the deformation gradient follows the velocity gradient L over one step.
@@ -94,9 +97,9 @@ struct SceneParameters : scene::SceneDescription
   VelocityTransfer velocity_transfer = VelocityTransfer::flip;
   /// relaxed_apic: tau in units of the Courant time h / max(c + |v|) (the CFL-1 step).
   double velocity_relaxation = 1.0;
-  /// XPIC: the number m of the series' terms (1 is PIC; each further term is one more pass
-  /// over the points).
-  int xpic_order = 5;
+  /// XPIC and FMPM: the number m of the series' terms (1 is PIC; each further term is one
+  /// more pass over the points).
+  int series_order = 5;
   /// A deformable projectile's points relax their FLIP velocity towards PIC over this many of
   /// the projectile's own Courant times h / max(c + |v|) (0: it uses velocity_transfer). A
   /// stiff projectile rings at its own grid-scale frequency after each contact impulse; FLIP

@@ -386,7 +386,8 @@ void Solver::advance(const double cap)
   }
 
   kinematics.time_step = dt;
-  if (parameters.velocity_transfer == VelocityTransfer::xpic)
+  if (parameters.velocity_transfer == VelocityTransfer::xpic ||
+      parameters.velocity_transfer == VelocityTransfer::fmpm)
     compute_xpic_correction();
   const bool musl = parameters.update_scheme == UpdateScheme::musl;
   const bool supports = any_support(grid_settings.faces);

@@ -313,7 +313,8 @@ private:
   void reduce_contact_result();
   /// Axisymmetric: the step's contact forces and supports' impulses of the revolved scene.
   void revolve_step_results();
-  /// XPIC(m): fields.xpic_correction = v*_m - v^n for the points' velocity update (mpm/xpic.h).
+  /// XPIC(m): fields.xpic_correction = v*_m - v^n for the points' velocity update; FMPM(m):
+  /// the series from v^(n+1) instead, less v^(n+1) (mpm/xpic.h).
   void compute_xpic_correction();
   void remove_points_outside_grid();
   std::string describe_point(std::size_t p) const;

@@ -1,5 +1,5 @@
-// The solver's XPIC(m) step: the series v*_m - v^n on the grid, summed over ranks after each
-// pass over the points (mpm/xpic.h).
+// The solver's XPIC(m) and FMPM(m) step: the series' correction on the grid (from v^n or from
+// v^(n+1)), summed over ranks after each pass over the points (mpm/xpic.h).
 #include "mpm/solver.h"
 #include "mpm/xpic.h"
 
@@ -9,8 +9,10 @@ void Solver::compute_xpic_correction()
 {
   // The MUSL projection's buffers are free until the points' update: each pass uses them.
   fields.xpic_correction.assign(fields.velocity.size(), Vector3::Zero());
-  first_xpic_term(grid, grid_settings, fields, xpic_term);
-  for (int k = 1; k < parameters.xpic_order; ++k)
+  const bool full_mass = parameters.velocity_transfer == VelocityTransfer::fmpm;
+  first_xpic_term(grid, grid_settings, fields, full_mass ? fields.velocity_new : fields.velocity,
+                  xpic_term);
+  for (int k = 1; k < parameters.series_order; ++k)
   {
     scatter_point_values(grid, transfer, kinematics, particles, xpic_term,
                          fields.projected_momentum, buffers.momentum_per_share);

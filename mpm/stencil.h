@@ -24,15 +24,21 @@ inline Vector3 cell_mean_shape_gradient(const Grid& grid, const int corner)
   return 0.25 * grid.inverse_cell_size() * Vector3(2.0 * a - 1.0, 2.0 * b - 1.0, 2.0 * c - 1.0);
 }
 
+/// The layer of nodes an axisymmetric grid's points touch: the grid is one cell thick across
+/// the r-y plane and nothing varies along it, so the plane's points give their whole weight to
+/// the nodes on its z- face, and the z+ layer stays empty (half the nodes a 3D stencil visits).
+inline constexpr int plane_node_layer = 0;
+
 /// Keys of the 8 corners (in cell_mean_shape_gradient's order) of the cell whose lowest node
-/// is `cell`.
+/// is `cell`; on an axisymmetric grid the z+ corners are their z- twins (plane_node_layer).
 inline std::array<std::int64_t, 8> cell_corner_keys(const Grid& grid, const std::int64_t cell)
 {
   const auto ijk = grid.node_ijk(cell);
+  const int across = grid.axisymmetric() ? 0 : 1;
   std::array<std::int64_t, 8> keys;
   for (int corner = 0; corner < 8; ++corner)
     keys[corner] = grid.node_key(ijk[0] + (corner & 1), ijk[1] + ((corner >> 1) & 1),
-                                 ijk[2] + ((corner >> 2) & 1));
+                                 ijk[2] + across * ((corner >> 2) & 1));
   return keys;
 }
 
@@ -125,9 +131,10 @@ inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3&
 }
 } // namespace detail
 
-/// The blocks of nodes a point's stencil may touch, each given by its first node and its width
-/// along every axis, for the node marking: one block of nodes_per_axis nodes from the first
-/// stencil node (linear, GIMP), or the 2 x 2 x 2 nodes of each corner's cell (CPDI).
+/// The blocks of nodes a point's stencil may touch, each given by its first node, its width
+/// along x and y and its depth along z, for the node marking: one block of nodes_per_axis
+/// nodes from the first stencil node (linear, GIMP; one layer deep on an axisymmetric grid),
+/// or the 2 x 2 x 2 nodes of each corner's cell (CPDI).
 template <class Visit>
 inline void for_each_stencil_block(const Grid& grid, const ShapeFunction shape, const double lp,
                                    const Vector3& x, const Eigen::Matrix3d& F, Visit&& visit)
@@ -135,9 +142,15 @@ inline void for_each_stencil_block(const Grid& grid, const ShapeFunction shape, 
   const Vector3 s = grid.to_cell_units(x);
   if (shape != ShapeFunction::cpdi)
   {
-    visit(std::array<int, 3>{{first_stencil_node(s[0], lp), first_stencil_node(s[1], lp),
-                              first_stencil_node(s[2], lp)}},
-          nodes_per_axis(shape));
+    const int n = nodes_per_axis(shape);
+    if (grid.axisymmetric())
+      visit(std::array<int, 3>{{first_stencil_node(s[0], lp), first_stencil_node(s[1], lp),
+                                plane_node_layer}},
+            n, 1);
+    else
+      visit(std::array<int, 3>{{first_stencil_node(s[0], lp), first_stencil_node(s[1], lp),
+                                first_stencil_node(s[2], lp)}},
+            n, n);
     return;
   }
   const Eigen::Matrix3d r = cpdi_half_vectors(F, lp);
@@ -146,7 +159,7 @@ inline void for_each_stencil_block(const Grid& grid, const ShapeFunction shape, 
     const Vector3 corner = cpdi_corner(s, r, c);
     visit(std::array<int, 3>{{first_stencil_node(corner[0], 0.0), first_stencil_node(corner[1], 0.0),
                               first_stencil_node(corner[2], 0.0)}},
-          2);
+          2, 2);
   }
 }
 
@@ -172,11 +185,17 @@ inline void for_each_node(const Grid& grid, const double half_size_cells, const 
       else
         gimp_axis_weights(s[d], half_size_cells, inverse_h, w[d]);
     }
-    // The r-y plane's third axis is the hoop direction: nothing varies along it.
+    // The r-y plane's third axis is the hoop direction: nothing varies along it, and one
+    // layer of nodes carries the plane (plane_node_layer).
+    int layers = n;
     if (grid.axisymmetric())
-      for (int k = 0; k < n; ++k)
-        w[2].derivative[k] = 0.0;
-    for (int k = 0; k < n; ++k)
+    {
+      layers = 1;
+      w[2].first_node = plane_node_layer;
+      w[2].value[0] = 1.0;
+      w[2].derivative[0] = 0.0;
+    }
+    for (int k = 0; k < layers; ++k)
       for (int j = 0; j < n; ++j)
       {
         const double wjk = w[1].value[j] * w[2].value[k];

@@ -69,7 +69,7 @@ void scatter_point_values(const Grid& grid, const TransferSettings& transfer,
 }
 
 void first_xpic_term(const Grid& grid, const GridUpdateSettings& settings, const GridFields& fields,
-                     std::vector<Vector3>& term)
+                     const std::vector<Vector3>& start, std::vector<Vector3>& term)
 {
   const std::size_t n_bodies = fields.n_bodies;
   const long n_nodes = static_cast<long>(grid.n_active());
@@ -79,8 +79,7 @@ void first_xpic_term(const Grid& grid, const GridUpdateSettings& settings, const
     for (std::size_t b = 0; b < n_bodies; ++b)
     {
       const std::size_t e = node * n_bodies + b;
-      term[e] = deformable_with_mass(settings, fields, e, b) ? fields.velocity[e]
-                                                             : Vector3::Zero();
+      term[e] = deformable_with_mass(settings, fields, e, b) ? start[e] : Vector3::Zero();
     }
 }
 

@@ -8,6 +8,13 @@
 // takes the first m terms of its series, v*_m = sum_(k<m) (I - A)^k v^n. The points then get
 // S (v*_m + v^(n+1) - v^n): PIC for m = 1, and as m grows every velocity field the grid can
 // represent (a rigid rotation included) passes unchanged while the part it cannot is removed.
+// FMPM(m) (Nairn and Hammerquist 2021, "Material point method simulations using an
+// approximate full mass matrix inverse", Comput. Methods Appl. Mech. Engrg. 377:113667) reads
+// the same series as the inverse of the consistent mass matrix M = S M_p S^T, M^-1 =
+// sum_k (I - A)^k M_L^-1, applied to the new lumped velocities: the points get
+// S sum_(k<m) (I - A)^k v^(n+1), PIC for m = 1, with no FLIP increment carried. Every term
+// after the first carries no momentum, so both conserve it. The points move with
+// S v^(n+1) under both, as under every transfer here.
 #pragma once
 
 #include "mpm/grid.h"
@@ -35,7 +42,8 @@ void next_xpic_term(const Grid& grid, const GridUpdateSettings& settings, const 
                     const std::vector<Vector3>& scattered, std::vector<Vector3>& term,
                     std::vector<Vector3>& correction);
 
-/// The starting term: v^n where the node-body has mass and is deformable, else zero.
+/// The starting term: `start` (v^n for XPIC, v^(n+1) for FMPM) where the node-body has mass
+/// and is deformable, else zero.
 void first_xpic_term(const Grid& grid, const GridUpdateSettings& settings, const GridFields& fields,
-                     std::vector<Vector3>& term);
+                     const std::vector<Vector3>& start, std::vector<Vector3>& term);
 } // namespace vulnus::mpm

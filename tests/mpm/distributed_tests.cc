@@ -197,8 +197,10 @@ TEST(DistributedMpm, ReproducesTheOneProcessRun)
   // XPIC's passes sum each term over the slabs' shared nodes like the scatter itself.
   mpm::SceneParameters xpic = crossing_spheres(false);
   xpic.velocity_transfer = mpm::VelocityTransfer::xpic;
-  xpic.xpic_order = 4;
+  xpic.series_order = 4;
   EXPECT_LT(largest_difference_from_one_process(xpic, 40), 1e-12) << "XPIC";
+  xpic.velocity_transfer = mpm::VelocityTransfer::fmpm;
+  EXPECT_LT(largest_difference_from_one_process(xpic, 40), 1e-12) << "FMPM";
   // An elastic-plastic sphere crossing the slabs: its histories migrate with its points.
   EXPECT_LT(largest_difference_from_one_process(crossing_spheres(false, true), 40), 1e-12);
   // The same sphere 400 times stiffer (20 times the gel's impedance), as a subcycled

@@ -71,12 +71,12 @@ mpm::SceneParameters two_gel_spheres(const double density_left, const double den
 }
 
 mpm::SceneParameters SpinningBlock::scene(const mpm::VelocityTransfer transfer,
-                                          const int xpic_order)
+                                          const int series_order)
 {
   mpm::SceneParameters scene =
     empty_scene(mpm::Vector3(-6e-3, -6e-3, -3e-3), mpm::Vector3(6e-3, 6e-3, 3e-3), 1e-3);
   scene.velocity_transfer = transfer;
-  scene.xpic_order = xpic_order;
+  scene.series_order = series_order;
   scene.cfl = 0.3;
   scene.materials.push_back(elastic_material("gel", 1e5, 1e4));
   scene.bodies.push_back(box_body("block", "gel", mpm::Vector3(-3e-3, -3e-3, -1e-3),

@@ -53,7 +53,7 @@ struct VibratingBar
 struct SpinningBlock
 {
   static constexpr double omega = 200.0;
-  static mpm::SceneParameters scene(mpm::VelocityTransfer transfer, int xpic_order = 5);
+  static mpm::SceneParameters scene(mpm::VelocityTransfer transfer, int series_order = 5);
   /// Kinetic energy left after `steps` of the spin (0.005 rad each), over its start.
   static double energy_left(const mpm::SceneParameters& scene, int steps);
 };

@@ -27,7 +27,7 @@ double bar_energy_left(const mpm::VelocityTransfer transfer, const int order)
 {
   mpm::SceneParameters scene = test::VibratingBar::scene(1e-3);
   scene.velocity_transfer = transfer;
-  scene.xpic_order = order;
+  scene.series_order = order;
   mpm::Solver solver(scene);
   test::VibratingBar::start_first_mode(solver);
   const double start = solver.initial_energy();
@@ -111,7 +111,7 @@ TEST(XpicTransfer, ARestoredRunContinuesBitForBit)
 {
   mpm::SceneParameters scene = test::rigid_ball_into_gel_slab();
   scene.velocity_transfer = mpm::VelocityTransfer::xpic;
-  scene.xpic_order = 4;
+  scene.series_order = 4;
   mpm::Solver reference(scene);
   for (int i = 0; i < 15; ++i)
     reference.advance();
