@@ -85,26 +85,40 @@ void first_xpic_term(const Grid& grid, const GridUpdateSettings& settings, const
 
 void next_xpic_term(const Grid& grid, const GridUpdateSettings& settings, const GridFields& fields,
                     const std::vector<Vector3>& scattered, std::vector<Vector3>& term,
-                    std::vector<Vector3>& correction)
+                    std::vector<Vector3>& correction, std::array<Vector3, 6>& support_impulse)
 {
   const std::size_t n_bodies = fields.n_bodies;
   const long n_nodes = static_cast<long>(grid.n_active());
-#pragma omp parallel for schedule(static)
-  for (long node = 0; node < n_nodes; ++node)
+  const bool supports = any_support(settings.faces);
+#pragma omp parallel
   {
-    const std::int64_t key = grid.active_keys()[node];
-    for (std::size_t b = 0; b < n_bodies; ++b)
+    std::array<Vector3, 6> impulse;
+    impulse.fill(Vector3::Zero());
+    std::array<Vector3, 6> elsewhere; // stopped at nodes another rank owns: booked there
+    elsewhere.fill(Vector3::Zero());
+#pragma omp for schedule(static)
+    for (long node = 0; node < n_nodes; ++node)
     {
-      const std::size_t e = node * n_bodies + b;
-      if (!deformable_with_mass(settings, fields, e, b))
+      const std::int64_t key = grid.active_keys()[node];
+      const bool owned = !settings.owns_node || settings.owns_node(key);
+      for (std::size_t b = 0; b < n_bodies; ++b)
       {
-        term[e].setZero();
-        continue;
+        const std::size_t e = node * n_bodies + b;
+        if (!deformable_with_mass(settings, fields, e, b))
+        {
+          term[e].setZero();
+          continue;
+        }
+        term[e] -= scattered[e] / fields.data[e].mass;
+        if (supports)
+          apply_face_conditions(grid, settings.faces, key, fields.data[e].mass, term[e],
+                                owned ? impulse : elsewhere);
+        correction[e] += term[e];
       }
-      term[e] -= scattered[e] / fields.data[e].mass;
-      apply_face_conditions(grid, settings.faces, key, term[e]);
-      correction[e] += term[e];
     }
+#pragma omp critical(vulnus_series_supports)
+    for (int f = 0; f < 6; ++f)
+      support_impulse[f] += impulse[f];
   }
 }
 } // namespace vulnus::mpm

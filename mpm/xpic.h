@@ -24,6 +24,7 @@
 #include "mpm/particles.h"
 #include "mpm/transfer_settings.h"
 
+#include <array>
 #include <vector>
 
 namespace vulnus::mpm
@@ -38,9 +39,12 @@ void scatter_point_values(const Grid& grid, const TransferSettings& transfer,
 
 /// One term of the series: term <- term - scattered / m_i (that is (I - A) term), zero where
 /// the node-body has no mass or is rigid, the face conditions applied; correction += term.
+/// A term carries no momentum until the faces stop part of it: what they take, m_i times the
+/// stopped components, is added to support_impulse by face (this rank's owned nodes), so
+/// that the momentum audit books it with the supports.
 void next_xpic_term(const Grid& grid, const GridUpdateSettings& settings, const GridFields& fields,
                     const std::vector<Vector3>& scattered, std::vector<Vector3>& term,
-                    std::vector<Vector3>& correction);
+                    std::vector<Vector3>& correction, std::array<Vector3, 6>& support_impulse);
 
 /// The starting term: `start` (v^n for XPIC, v^(n+1) for FMPM) where the node-body has mass
 /// and is deformable, else zero.
