@@ -143,14 +143,10 @@ inline void for_each_stencil_block(const Grid& grid, const ShapeFunction shape, 
   if (shape != ShapeFunction::cpdi)
   {
     const int n = nodes_per_axis(shape);
-    if (grid.axisymmetric())
-      visit(std::array<int, 3>{{first_stencil_node(s[0], lp), first_stencil_node(s[1], lp),
-                                plane_node_layer}},
-            n, 1);
-    else
-      visit(std::array<int, 3>{{first_stencil_node(s[0], lp), first_stencil_node(s[1], lp),
-                                first_stencil_node(s[2], lp)}},
-            n, n);
+    const bool plane = grid.axisymmetric();
+    visit(std::array<int, 3>{{first_stencil_node(s[0], lp), first_stencil_node(s[1], lp),
+                              plane ? plane_node_layer : first_stencil_node(s[2], lp)}},
+          n, plane ? 1 : n);
     return;
   }
   const Eigen::Matrix3d r = cpdi_half_vectors(F, lp);

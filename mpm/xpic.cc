@@ -94,13 +94,10 @@ void next_xpic_term(const Grid& grid, const GridUpdateSettings& settings, const 
   {
     std::array<Vector3, 6> impulse;
     impulse.fill(Vector3::Zero());
-    std::array<Vector3, 6> elsewhere; // stopped at nodes another rank owns: booked there
-    elsewhere.fill(Vector3::Zero());
 #pragma omp for schedule(static)
     for (long node = 0; node < n_nodes; ++node)
     {
       const std::int64_t key = grid.active_keys()[node];
-      const bool owned = !settings.owns_node || settings.owns_node(key);
       for (std::size_t b = 0; b < n_bodies; ++b)
       {
         const std::size_t e = node * n_bodies + b;
@@ -110,9 +107,10 @@ void next_xpic_term(const Grid& grid, const GridUpdateSettings& settings, const 
           continue;
         }
         term[e] -= scattered[e] / fields.data[e].mass;
-        if (supports)
-          apply_face_conditions(grid, settings.faces, key, fields.data[e].mass, term[e],
-                                owned ? impulse : elsewhere);
+        if (supports && (!settings.owns_node || settings.owns_node(key)))
+          apply_face_conditions(grid, settings.faces, key, fields.data[e].mass, term[e], impulse);
+        else if (supports) // booked by the rank that owns the node
+          apply_face_conditions(grid, settings.faces, key, term[e]);
         correction[e] += term[e];
       }
     }
