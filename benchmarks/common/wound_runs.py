@@ -27,6 +27,45 @@ FIGURES = [
     ("tract_area", lambda s: mean(s["tract"]["area_m2"])),
     ("exit_velocity", lambda s: s["bullet"]["exit_velocity_m_s"]),
 ]
+# The figures that measure the mechanics, beside the paper's flags: the debris (failed points
+# that carry no deviatoric stress) and the faces' smoothed outlines; each with the name
+# summary.json's wound_resolution judges it under.
+MECHANICS = [
+    ("debris_volume", lambda s: s["debris"]["volume_m3"], "debris"),
+    ("debris_tract_area", lambda s: mean(s["tract"]["debris_area_m2"]), "tract.debris_area_m2"),
+    ("entrance_outline_d",
+     lambda s: s["entrance_wound"]["outline"]["equivalent_diameter_m"], "entrance_wound.outline"),
+    ("entrance_outline_aspect",
+     lambda s: s["entrance_wound"]["outline"]["aspect_ratio"], "entrance_wound.outline"),
+    ("exit_outline_d",
+     lambda s: s["exit_wound"]["outline"]["equivalent_diameter_m"], "exit_wound.outline"),
+    ("exit_outline_aspect",
+     lambda s: s["exit_wound"]["outline"]["aspect_ratio"], "exit_wound.outline"),
+]
+# The wound_resolution entry of each paper figure (None: always resolved, as the exit velocity).
+FLAG_NAMES = {
+    "vol_matrix": "failed_volume_m3.matrix", "vol_fiber": "failed_volume_m3.fiber",
+    "vol_total": "failed_volume_m3.total", "entrance_d": "entrance_wound",
+    "exit_d": "exit_wound", "entrance_aspect": "entrance_wound", "exit_aspect": "exit_wound",
+    "tract_area": "tract.area_m2", "exit_velocity": None,
+}
+
+
+def all_figures():
+    """(name, getter, resolution entry) of every wound figure: the paper's, then the mechanics'."""
+    return [(f, g, FLAG_NAMES.get(f)) for f, g in FIGURES] + MECHANICS
+
+
+def resolved(summary, name):
+    """Whether the run's summary marks the figure `name` resolved at its cell."""
+    if name is None:
+        return True
+    for entry in summary.get("wound_resolution", {}).get("figures", []):
+        if entry["figure"] == name:
+            return bool(entry["resolved"])
+    return True
+
+
 # A failed volume below this fraction of the total (the fiber-only remainder; none in the
 # isotropic slabs) is measured against the total failed volume, not against itself.
 SMALL_VOLUME_FRACTION = 0.01
