@@ -1,5 +1,5 @@
-// The resolution rule of the wound figures: narrowest width in cells against cells_needed, and
-// the failure flags of a fibred target never resolved.
+// The resolution rule of the wound figures: narrowest width in cells against cells_needed; in a
+// fibred target only the matrix-failed volume is judged by its width.
 #include "analysis/wound_resolution.h"
 
 #include <cmath>
@@ -41,19 +41,29 @@ std::vector<FigureResolution> resolve_wound_figures(const WoundMetrics& m, const
       r.reason = "its region spans fewer than the cells needed";
     out.push_back(r);
   };
-  auto flag = [&](const std::string& figure, const double width) {
+  // In a fibred target only the matrix-failed volume converges; the rest is judged by why not.
+  auto fibred = [&](const std::string& figure, const double width, const char* why) {
     if (!fibred_target || !(width > 0.0))
       return by_width(figure, width);
     FigureResolution r;
     r.figure = figure;
     r.cells_across = cell_size > 0.0 ? width / cell_size : 0.0;
-    r.reason = "a failure flag of a fibred target: it records a limit passed, not the tissue's "
-               "state, and does not converge; read debris and the outlines";
+    r.reason = why;
     out.push_back(r);
   };
+  const char* flag_reason = "a failure flag of a fibred target: it records a limit passed, not "
+                            "the tissue's state, and does not converge";
+  const char* drift_reason = "in a fibred target it drifts under refinement however many cells "
+                             "span it (docs/locking.md); quote it with its cell";
+  auto flag = [&](const std::string& figure, const double width) {
+    fibred(figure, width, flag_reason);
+  };
+  auto drifts = [&](const std::string& figure, const double width) {
+    fibred(figure, width, drift_reason);
+  };
   const double debris_width = mean_diameter(m.debris_tract_area);
-  by_width("debris", debris_width);
-  by_width("tract.debris_area_m2", debris_width);
+  drifts("debris", debris_width);
+  drifts("tract.debris_area_m2", debris_width);
   const double length = m.path.hits ? m.path.length() : 0.0;
   const double failed_volume = m.volumes[1] + m.volumes[2] + m.volumes[3];
   by_width("failed_volume_m3.matrix",
@@ -71,7 +81,7 @@ std::vector<FigureResolution> resolve_wound_figures(const WoundMetrics& m, const
     if (wound->n_points > 0)
       flag(name, minor_width(wound->equivalent_diameter, wound->aspect_ratio));
     if (wound->outline.measured)
-      by_width(name + ".outline",
+      drifts(name + ".outline",
                minor_width(wound->outline.equivalent_diameter, wound->outline.aspect_ratio));
   }
   return out;

@@ -1,10 +1,10 @@
 // Whether each wound figure of summary.json is resolved at the run's cell. Rule (stated in
 // docs/guide/run-a-scene.md): a figure measures a region, and it is resolved when that region
-// spans at least `cells_needed` cells across its narrowest width; the paper's failure flags in
-// a fibred target (the total and fibre volumes, the tract and the face wounds measured on the
-// total flag) are never resolved: a flag records a limit passed, not the tissue's state, and
-// their refinement series do not converge (docs/locking.md); the debris and the outlines are
-// the figures to read there.
+// spans at least `cells_needed` cells across its narrowest width. In a fibred target only the
+// matrix-failed volume is judged so: the paper's failure flags (the total and fibre volumes, the
+// tract and the face wounds on the total flag) record a limit passed, not the tissue's state,
+// and the debris and the face outlines drift under refinement however many cells span them
+// (docs/locking.md); those are never resolved there.
 #pragma once
 
 #include "analysis/wound_metrics.h"

@@ -1,6 +1,6 @@
 // The resolution rule of the wound figures (analysis/wound_resolution.h) on hand-built metrics:
 // a wound narrower than the cells needed is flagged, the same wound at a finer cell is not,
-// and a fibred target's failure flags are never resolved.
+// and in a fibred target only the matrix-failed volume is ever resolved.
 #include "analysis/wound_resolution.h"
 
 #include <gtest/gtest.h>
@@ -62,17 +62,24 @@ TEST(WoundResolution, AWoundNarrowerThanTheCellsNeededIsFlaggedAndAFinerCellReso
   EXPECT_TRUE(by_name(resolve_wound_figures(m, 0.25e-3, false)).at("exit_wound.outline").resolved);
 }
 
-TEST(WoundResolution, AFibredTargetsFailureFlagsAreNeverResolved)
+TEST(WoundResolution, InAFibredTargetOnlyTheMatrixFailedVolumeIsResolved)
 {
-  const auto fine = by_name(resolve_wound_figures(round_wound(12e-3), 0.1e-3, true));
-  for (const char* flag : {"failed_volume_m3.total", "tract.area_m2", "entrance_wound", "exit_wound"})
+  const WoundMetrics m = round_wound(12e-3);
+  const auto fine = by_name(resolve_wound_figures(m, 0.1e-3, true)); // 120 cells across
+  for (const char* figure : {"failed_volume_m3.total", "tract.area_m2", "entrance_wound",
+                             "exit_wound", "debris", "tract.debris_area_m2",
+                             "entrance_wound.outline", "exit_wound.outline"})
   {
-    EXPECT_FALSE(fine.at(flag).resolved) << flag;
-    EXPECT_FALSE(fine.at(flag).reason.empty()) << flag;
+    EXPECT_FALSE(fine.at(figure).resolved) << figure;
+    EXPECT_FALSE(fine.at(figure).reason.empty()) << figure;
   }
-  EXPECT_TRUE(fine.at("debris").resolved);
-  EXPECT_TRUE(fine.at("entrance_wound.outline").resolved);
+  EXPECT_NE(fine.at("debris").reason, fine.at("failed_volume_m3.total").reason);
+  EXPECT_TRUE(fine.at("failed_volume_m3.matrix").resolved);
+  EXPECT_FALSE(by_name(resolve_wound_figures(m, 1.1e-3, true)).at("failed_volume_m3.matrix").resolved);
   EXPECT_EQ(fine.count("failed_volume_m3.fiber"), 0u); // no fibre-failed point: no figure
+  // The same wound in an isotropic target: every figure resolved at this cell.
+  for (const FigureResolution& r : resolve_wound_figures(m, 0.1e-3, false))
+    EXPECT_TRUE(r.resolved) << r.figure;
 }
 
 TEST(WoundResolution, AnEmptyRegionHasNoFigureToJudge)
