@@ -116,11 +116,14 @@ mpm::SceneParameters VibratingBar::scene(const double cell_size)
   return scene;
 }
 
-void VibratingBar::start_first_mode(mpm::Solver& solver)
+void VibratingBar::start_first_mode(mpm::Solver& solver) { start_mode(solver, 1); }
+
+void VibratingBar::start_mode(mpm::Solver& solver, const int n)
 {
   const double amplitude = 1e-3 * wave_speed();
+  const double wave_number = (2 * n - 1) * M_PI / (2 * length);
   solver.set_point_velocities([&](const mpm::Vector3& x) {
-    return mpm::Vector3(amplitude * std::sin(M_PI * x[0] / (2 * length)), 0, 0);
+    return mpm::Vector3(amplitude * std::sin(wave_number * x[0]), 0, 0);
   });
 }
 

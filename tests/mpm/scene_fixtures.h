@@ -46,6 +46,9 @@ struct VibratingBar
   static mpm::SceneParameters scene(double cell_size);
   /// Gives the bar's points the first mode's velocity at peak strain amplitude 1e-3.
   static void start_first_mode(mpm::Solver& solver);
+  /// Gives the bar's points mode n's velocity sin((2n - 1) pi x / 2L), at the first mode's
+  /// velocity amplitude; its period is period() / (2n - 1).
+  static void start_mode(mpm::Solver& solver, int n);
 };
 
 /// A free 6 x 6 x 2 mm gel block in the middle of a 12 x 12 x 6 mm grid of 1 mm cells, spun
