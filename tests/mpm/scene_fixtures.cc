@@ -84,11 +84,16 @@ mpm::SceneParameters SpinningBlock::scene(const mpm::VelocityTransfer transfer,
   return scene;
 }
 
+void SpinningBlock::start(mpm::Solver& solver)
+{
+  solver.set_point_velocities([](const mpm::Vector3& x)
+                              { return mpm::Vector3(-omega * x[1], omega * x[0], 0); });
+}
+
 double SpinningBlock::energy_left(const mpm::SceneParameters& scene, const int steps)
 {
   mpm::Solver solver(scene);
-  solver.set_point_velocities([](const mpm::Vector3& x)
-                              { return mpm::Vector3(-omega * x[1], omega * x[0], 0); });
+  start(solver);
   const double start = solver.diagnostics().kinetic_energy;
   for (int i = 0; i < steps; ++i)
     solver.advance();

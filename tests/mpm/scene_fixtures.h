@@ -57,6 +57,8 @@ struct SpinningBlock
 {
   static constexpr double omega = 200.0;
   static mpm::SceneParameters scene(mpm::VelocityTransfer transfer, int series_order = 5);
+  /// Gives the solver's points the spin's rigid velocity.
+  static void start(mpm::Solver& solver);
   /// Kinetic energy left after `steps` of the spin (0.005 rad each), over its start.
   static double energy_left(const mpm::SceneParameters& scene, int steps);
 };
