@@ -115,7 +115,8 @@ PlasticReturn<Scalar> NeoHookeanPlastic::return_map(const Matrix3<Scalar>& F,
   const Scalar J = F.determinant();
   if (!(value_of(J) > 0.0))
     throw_inverted(value_of(J));
-  const Matrix3<Scalar> F_bar = (1.0 / cbrt(J)) * F;
+  const Scalar volume_cube_root = cbrt(J);
+  const Matrix3<Scalar> F_bar = (1.0 / volume_cube_root) * F;
   const Matrix3<Scalar> C_p_inverse =
       from_voigt(history.inverse_plastic_cauchy_green).template cast<Scalar>();
   const Matrix3<Scalar> b_trial = F_bar * C_p_inverse * F_bar.transpose();
@@ -136,6 +137,7 @@ PlasticReturn<Scalar> NeoHookeanPlastic::return_map(const Matrix3<Scalar>& F,
     result.deviatoric_norm = norm_trial;
     result.flow_stress = Scalar(prm.yield_stress + H * alpha_n);
     result.trial_trace = 3.0 * I_e;
+    result.volume_cube_root = volume_cube_root;
     return result;
   }
 
@@ -182,6 +184,7 @@ PlasticReturn<Scalar> NeoHookeanPlastic::return_map(const Matrix3<Scalar>& F,
   result.deviatoric_norm = norm_trial - 2.0 * mu_bar * delta_gamma;
   result.flow_stress = flow_stress;
   result.trial_trace = 3.0 * I_e;
+  result.volume_cube_root = volume_cube_root;
   return result;
 }
 
@@ -216,7 +219,7 @@ void NeoHookeanPlastic::update_point(const Tensor2& F, const Vector3&, std::uint
 
   if (r.plastic_multiplier > 0.0)
   {
-    const Tensor2 F_bar_inverse = std::cbrt(J) * F.inverse();
+    const Tensor2 F_bar_inverse = r.volume_cube_root * F.inverse();
     history.inverse_plastic_cauchy_green =
         to_voigt(F_bar_inverse * r.elastic_b_bar * F_bar_inverse.transpose());
   }

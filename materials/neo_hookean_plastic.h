@@ -20,6 +20,7 @@ template <typename Scalar> struct PlasticReturn
   Scalar deviatoric_norm;                    ///< |s_{n+1}|
   Scalar flow_stress;                        ///< current yield stress, rate factor included
   Scalar trial_trace;                        ///< tr b_e~^trial
+  Scalar volume_cube_root;                   ///< J^(1/3)
 };
 
 /// Simo & Hughes box 9.1 with the volumetric law U(J) of the parameters (Simo-Hughes

@@ -2,6 +2,7 @@
 // same pass), then deformation gradients and positions.
 #include "mpm/grid_to_particle.h"
 
+#include "mpm/deformation_update.h"
 #include "mpm/stencil.h"
 #include "mpm/volume_averaging.h"
 
@@ -244,9 +245,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    }
                    if (!debris && midpoint)
                    {
-                     const Tensor2 half_step = (0.5 * dt) * L;
-                     F = (Tensor2::Identity() - half_step).inverse() *
-                         ((Tensor2::Identity() + half_step) * F);
+                     F = midpoint_update((0.5 * dt) * L, F);
                    }
                    else if (!debris)
                      F = (Tensor2::Identity() + dt * L) * F;
