@@ -2,6 +2,7 @@
 // and its registration under "transversely isotropic hyperelastic" / "isotropic hyperelastic".
 #include "materials/transversely_isotropic_hyperelastic.h"
 
+#include "materials/cofactor.h"
 #include "materials/dual_number.h"
 #include "materials/material_registry.h"
 #include "materials/two_surface_failure.h"
@@ -24,21 +25,6 @@ void throw_inverted(const double J)
           << " <= 0 (inverted or degenerate element/particle); reduce the time step or "
              "refine the resolution";
   throw std::runtime_error(message.str());
-}
-
-template <typename Scalar> Matrix3<Scalar> cofactor(const Matrix3<Scalar>& F)
-{
-  Matrix3<Scalar> c;
-  c(0, 0) = F(1, 1) * F(2, 2) - F(1, 2) * F(2, 1);
-  c(0, 1) = F(1, 2) * F(2, 0) - F(1, 0) * F(2, 2);
-  c(0, 2) = F(1, 0) * F(2, 1) - F(1, 1) * F(2, 0);
-  c(1, 0) = F(0, 2) * F(2, 1) - F(0, 1) * F(2, 2);
-  c(1, 1) = F(0, 0) * F(2, 2) - F(0, 2) * F(2, 0);
-  c(1, 2) = F(0, 1) * F(2, 0) - F(0, 0) * F(2, 1);
-  c(2, 0) = F(0, 1) * F(1, 2) - F(0, 2) * F(1, 1);
-  c(2, 1) = F(0, 2) * F(1, 0) - F(0, 0) * F(1, 2);
-  c(2, 2) = F(0, 0) * F(1, 1) - F(0, 1) * F(1, 0);
-  return c;
 }
 } // namespace
 

@@ -1,6 +1,8 @@
 // The midpoint update of a point's deformation gradient over one step.
 #pragma once
 
+#include "materials/cofactor.h"
+
 #include <Eigen/Core>
 
 namespace vulnus::mpm
@@ -10,16 +12,7 @@ namespace vulnus::mpm
 inline Eigen::Matrix3d midpoint_update(const Eigen::Matrix3d& A, const Eigen::Matrix3d& F)
 {
   const Eigen::Matrix3d M = Eigen::Matrix3d::Identity() - A;
-  Eigen::Matrix3d adjugate;
-  adjugate(0, 0) = M(1, 1) * M(2, 2) - M(1, 2) * M(2, 1);
-  adjugate(0, 1) = M(0, 2) * M(2, 1) - M(0, 1) * M(2, 2);
-  adjugate(0, 2) = M(0, 1) * M(1, 2) - M(0, 2) * M(1, 1);
-  adjugate(1, 0) = M(1, 2) * M(2, 0) - M(1, 0) * M(2, 2);
-  adjugate(1, 1) = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
-  adjugate(1, 2) = M(0, 2) * M(1, 0) - M(0, 0) * M(1, 2);
-  adjugate(2, 0) = M(1, 0) * M(2, 1) - M(1, 1) * M(2, 0);
-  adjugate(2, 1) = M(0, 1) * M(2, 0) - M(0, 0) * M(2, 1);
-  adjugate(2, 2) = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+  const Eigen::Matrix3d adjugate = materials::cofactor(Eigen::Matrix3d(M.transpose()));
   const double det = M(0, 0) * adjugate(0, 0) + M(0, 1) * adjugate(1, 0) + M(0, 2) * adjugate(2, 0);
   return (2.0 / det) * (adjugate * F) - F;
 }
