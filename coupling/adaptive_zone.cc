@@ -204,7 +204,10 @@ void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
 
   const double added_energy = mpm_solver->add_points(body, std::move(added));
   (void)added_energy;
-  mpm_solver->share_nodes({body, keys, this});
+  if (follows_interface())
+    place_interface();
+  else
+    mpm_solver->share_nodes({body, keys, this});
 
   std::uint64_t counts[1] = {n_added};
   mpm_solver->rank_group().sum(counts, 1);

@@ -285,6 +285,21 @@ std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& sc
                         "explicit one (central difference) has none: it would change nothing",
                         "use Window coupling = balanced (the default), or Integrator = Newmark "
                         "or generalized alpha"});
+  // The implicit far field's windows solve its effective interface mass node by node; a
+  // following interface would need it over the grid nodes each node is spread on.
+  if (hybrid.interface == InterfacePlacement::following &&
+      far_field.integrator != fem::TimeIntegrator::central_difference)
+    problems.push_back({{"interface", "far_field.integrator"},
+                        "a following interface needs the explicit central-difference far field",
+                        "use Integrator = central difference, or Interface = grid nodes"});
+  if (hybrid.interface == InterfacePlacement::following && adaptive.enabled &&
+      adaptive.interface_motion == InterfaceMotion::total)
+    problems.push_back({{"interface", "adaptive.interface_motion"},
+                        "Adaptive zone interface motion = total bounds how far an interface on "
+                        "grid nodes may move; a following interface needs no such bound, and "
+                        "with it the zone would grow on every wave",
+                        "use Adaptive zone interface motion = non-affine, or Interface = grid "
+                        "nodes"});
   if (far_field.degree != 1)
     problems.push_back({{"far_field.degree"},
                         "the interface nodes must coincide with MPM grid nodes, which needs "

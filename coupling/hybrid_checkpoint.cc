@@ -3,13 +3,15 @@
 #include "coupling/hybrid_solver.h"
 #include "mpm/binary_io.h"
 
+#include <algorithm>
+
 namespace vulnus::coupling
 {
 namespace binary = mpm::binary;
 
 namespace
 {
-constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '7'};
+constexpr char tag[8] = {'V', 'U', 'L', 'H', 'Y', 'B', 'R', '8'};
 } // namespace
 
 void HybridSolver::save(std::ostream& out) const
@@ -60,6 +62,16 @@ void HybridSolver::save(std::ostream& out) const
   binary::put_vector(out, dashpot_mass);
   for (const double v : {mpm_work_at_window_start, fe_work_at_window_start, largest_window_work})
     binary::put(out, v);
+  // A following interface: where its nodes were spread when the window opened.
+  binary::put_vector(out, grid_keys);
+  binary::put_vector(out, spread_begin);
+  binary::put_vector(out, spread_node);
+  binary::put_vector(out, spread_weight);
+  binary::put_vector(out, grid_velocity_start);
+  binary::put_vector(out, grid_velocity_end);
+  binary::put(out, largest_interface_displacement);
+  binary::put_vector(out, interface_position);
+  binary::put_vector(out, interface_gradient);
   out.write(tag, sizeof(tag));
   if (!out)
     throw std::runtime_error("hybrid checkpoint could not be written");
@@ -85,7 +97,8 @@ void HybridSolver::restore(std::istream& in)
     match_interface_nodes(comm);
     for (std::vector<mpm::Vector3>* v : {&velocity_start, &velocity_end, &created, &correction})
       v->assign(keys.size(), mpm::Vector3::Zero());
-    mpm_solver->share_nodes({split.coupled_body, keys, this});
+    if (!follows_interface())
+      mpm_solver->share_nodes({split.coupled_body, keys, this});
     retire_far_field_if_empty();
   }
   mpm_solver->restore(in);
@@ -155,6 +168,29 @@ void HybridSolver::restore(std::istream& in)
   {
     factor_effective_mass(std::vector<double>(keys.size(), 0.0), balance_free_solver);
     factor_dashpot(dashpot_ratio, dashpot_mass);
+  }
+  binary::get_vector(in, grid_keys);
+  binary::get_vector(in, spread_begin);
+  binary::get_vector(in, spread_node);
+  binary::get_vector(in, spread_weight);
+  binary::get_vector(in, grid_velocity_start);
+  binary::get_vector(in, grid_velocity_end);
+  binary::get(in, largest_interface_displacement);
+  binary::get_vector(in, interface_position);
+  binary::get_vector(in, interface_gradient);
+  if (follows_interface())
+  {
+    if (!in || spread_begin.size() != keys.size() + 1 ||
+        spread_node.size() != spread_weight.size() || spread_begin.back() != spread_node.size() ||
+        grid_velocity_start.size() != grid_keys.size() ||
+        grid_velocity_end.size() != grid_keys.size() ||
+        interface_position.size() != keys.size() ||
+        std::any_of(spread_node.begin(), spread_node.end(),
+                    [&](const std::uint32_t g) { return g >= grid_keys.size(); }))
+      throw std::runtime_error("hybrid checkpoint is inconsistent (following interface)");
+    spread_interface_masses();
+    if (!retired)
+      mpm_solver->share_nodes({split.coupled_body, grid_keys, this});
   }
   binary::expect_tag(in, tag, "hybrid checkpoint is incomplete (no trailer)");
 }

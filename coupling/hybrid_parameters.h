@@ -34,6 +34,17 @@ enum class ZoneStart
   around_path
 };
 
+/// Where the far field's interface nodes meet the MPM grid (docs/hybrid_interface.md).
+enum class InterfacePlacement
+{
+  /// Each interface node is the grid node it started on, for the whole run: the coupling
+  /// assumes the interface moves a small fraction of a cell.
+  grid_nodes,
+  /// Each interface node is spread over the grid nodes around where it is now, like a
+  /// material point, at every step or window start: the interface may move any distance.
+  following
+};
+
 /// Which motion of an interface node converts its cell.
 enum class InterfaceMotion
 {
@@ -89,6 +100,7 @@ struct HybridParameters
   /// (explicit) or the deck step (implicit).
   unsigned int substeps = 0;
   WindowCoupling window_coupling = WindowCoupling::balanced;
+  InterfacePlacement interface = InterfacePlacement::grid_nodes;
   ZoneStart zone_start = ZoneStart::box;
   /// around_path: the tissue kept around the projectile's radius plus one cell, m.
   double path_margin = 0.002;

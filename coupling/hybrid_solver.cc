@@ -37,7 +37,10 @@ HybridSolver::HybridSolver(const HybridScene& scene, MPI_Comm communicator,
   for (std::vector<mpm::Vector3>* v :
        {&velocity_start, &velocity_end, &created, &correction})
     v->assign(keys.size(), mpm::Vector3::Zero());
-  mpm_solver->share_nodes({split.coupled_body, keys, this});
+  if (follows_interface())
+    place_interface();
+  else
+    mpm_solver->share_nodes({split.coupled_body, keys, this});
 }
 
 void HybridSolver::match_interface_nodes(MPI_Comm communicator)
@@ -148,6 +151,8 @@ void HybridSolver::advance()
   const double end = split.mpm.end_time;
   if (split.hybrid.scheme == CouplingScheme::same_step)
   {
+    if (follows_interface())
+      place_interface();
     mpm_solver->advance(fe_solver->next_time_step());
     ++book.mpm_steps;
     return;
@@ -176,6 +181,8 @@ void HybridSolver::advance()
     window_start = t;
     window_end = std::min(t + window, end);
     window_open = true;
+    if (follows_interface())
+      place_interface();
   }
   mpm_solver->advance(window_end - t);
   ++book.mpm_steps;
@@ -298,6 +305,11 @@ void HybridSolver::exchange(const double time, const double dt,
                             const mpm::SharedNodeState& mpm_side,
                             std::vector<mpm::Vector3>& v_start, std::vector<mpm::Vector3>& v_end)
 {
+  if (follows_interface())
+  {
+    exchange_following(time, dt, mpm_side, v_start, v_end);
+    return;
+  }
   if (split.hybrid.scheme == CouplingScheme::same_step)
   {
     start_window_correction();
@@ -327,25 +339,33 @@ void HybridSolver::exchange(const double time, const double dt,
     predict_interface(window, mpm_side);
     advance_fe(window);
   }
+  substep_velocities(time, dt, first_substep, velocity_start, velocity_end, v_start, v_end);
+  book_mpm_side(dt, mpm_side, v_start, v_end);
+}
+
+void HybridSolver::substep_velocities(const double time, const double dt, const bool first_substep,
+                                      const std::vector<mpm::Vector3>& window_start_velocity,
+                                      const std::vector<mpm::Vector3>& window_end_velocity,
+                                      std::vector<mpm::Vector3>& v_start,
+                                      std::vector<mpm::Vector3>& v_end) const
+{
   if (split.fe.staggered_velocity)
   {
     // Central difference: the interface moves with one velocity over the whole window.
-    v_start = first_substep ? velocity_start : velocity_end;
-    v_end = velocity_end;
+    v_start = first_substep ? window_start_velocity : window_end_velocity;
+    v_end = window_end_velocity;
+    return;
   }
-  else
+  // End-of-step velocities, interpolated linearly over the window.
+  const double window = window_end - window_start;
+  const double s0 = (time - window_start) / window;
+  const double s1 = std::min(1.0, (time + dt - window_start) / window);
+  for (std::size_t k = 0; k < window_start_velocity.size(); ++k)
   {
-    // End-of-step velocities, interpolated linearly over the window.
-    const double s0 = (time - window_start) / window;
-    const double s1 = std::min(1.0, (time + dt - window_start) / window);
-    for (std::size_t k = 0; k < keys.size(); ++k)
-    {
-      const mpm::Vector3 jump = velocity_end[k] - velocity_start[k];
-      v_start[k] = velocity_start[k] + s0 * jump;
-      v_end[k] = velocity_start[k] + s1 * jump;
-    }
+    const mpm::Vector3 jump = window_end_velocity[k] - window_start_velocity[k];
+    v_start[k] = window_start_velocity[k] + s0 * jump;
+    v_end[k] = window_start_velocity[k] + s1 * jump;
   }
-  book_mpm_side(dt, mpm_side, v_start, v_end);
 }
 
 Eigen::Vector3d HybridSolver::impulse_in_transit() const

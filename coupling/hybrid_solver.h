@@ -105,6 +105,15 @@ public:
   const HybridScene& scene() const { return split; }
   const InterfaceLedger& ledger() const { return book; }
   std::size_t n_interface_nodes() const { return keys.size(); }
+  /// Interface = following: the interface nodes are spread over the grid nodes around where
+  /// they are now (coupling/following_interface.cc).
+  bool follows_interface() const
+  {
+    return split.hybrid.interface == InterfacePlacement::following;
+  }
+  /// The grid nodes the interface shares with the MPM side now (its nodes' home grid nodes
+  /// unless it follows them).
+  std::size_t n_shared_grid_nodes() const { return follows_interface() ? grid_keys.size() : keys.size(); }
   /// Interface nodes whose FE owner rank is not the rank of the MPM slab holding the grid
   /// node (at the start; 0 on one rank).
   std::size_t n_interface_nodes_across_ranks() const { return fe_nodes_on_other_mpm_ranks; }
@@ -197,6 +206,11 @@ public:
   void exchange(double time, double dt, const mpm::SharedNodeState& mpm_side,
                 std::vector<mpm::Vector3>& velocity_start,
                 std::vector<mpm::Vector3>& velocity_end) override;
+  /// A following interface: the interface's mass at each shared grid node.
+  const std::vector<double>* blend_masses() const override
+  {
+    return follows_interface() ? &grid_fe_share : nullptr;
+  }
 
 private:
   /// The zone the far field's flagged cells need, and what each rule flagged inside the limit.
@@ -306,6 +320,42 @@ private:
   void book_mpm_side(double dt, const mpm::SharedNodeState& mpm_side,
                      const std::vector<mpm::Vector3>& velocity_start,
                      const std::vector<mpm::Vector3>& velocity_end);
+  /// The MPM side's velocities over a substep of an explicit window, from the shared nodes'
+  /// velocities at the window's start and end (at its end throughout, staggered).
+  void substep_velocities(double time, double dt, bool first_substep,
+                          const std::vector<mpm::Vector3>& window_start_velocity,
+                          const std::vector<mpm::Vector3>& window_end_velocity,
+                          std::vector<mpm::Vector3>& v_start, std::vector<mpm::Vector3>& v_end) const;
+
+  // --- following interface (coupling/following_interface.cc) -----------------------------
+  /// Spreads every interface node over the grid nodes around its current position
+  /// (trilinear weights; a node on a grid node keeps that node alone) and shares those grid
+  /// nodes with the MPM side. Collective; at a window's start.
+  void place_interface();
+  /// grid_fe_share from the spread and the interface nodes' masses.
+  void spread_interface_masses();
+  /// The interface nodes' momentum spread on the grid with velocities `v` (by key), each
+  /// node's field affine about it with interface_gradient.
+  std::vector<mpm::Vector3> spread_interface_momentum(const std::vector<mpm::Vector3>& v) const;
+  /// interface_gradient, from the FE ranks owning the nodes.
+  void gather_interface_gradients();
+  /// predict_interface for a following interface: the interface nodes move by their own
+  /// forces over the far field's step fe_dt, the MPM grid nodes by theirs over the MPM step
+  /// mpm_dt; the two velocity fields stick at every shared grid node (each takes the node's
+  /// centre-of-mass velocity) and the interface nodes take their field's change back like
+  /// FLIP, so momentum is exchanged exactly.
+  void predict_following(double fe_dt, double mpm_dt, const mpm::SharedNodeState& mpm_side);
+  /// A later substep of a window: the MPM grid nodes move by their own forces and stick to
+  /// the interface's velocity over the window (its far field has stepped already); what that
+  /// takes is booked and handed to the interface in the next window.
+  void stick_to_interface(double dt, const mpm::SharedNodeState& mpm_side);
+  /// book_mpm_side over the grid nodes, the reactions handed to the interface nodes in
+  /// proportion to their mass there.
+  void book_mpm_side_following(double dt, const mpm::SharedNodeState& mpm_side,
+                               const std::vector<mpm::Vector3>& v_start,
+                               const std::vector<mpm::Vector3>& v_end);
+  void exchange_following(double time, double dt, const mpm::SharedNodeState& mpm_side,
+                          std::vector<mpm::Vector3>& v_start, std::vector<mpm::Vector3>& v_end);
 
   HybridScene split;
   std::unique_ptr<mpm::Solver> mpm_solver;
@@ -317,6 +367,19 @@ private:
   std::vector<mpm::Vector3> free_components;
   std::size_t fe_nodes_on_other_mpm_ranks = 0;
   InterfaceLedger book;
+  // Following interface: the grid nodes shared (sorted keys) and each interface node's
+  // weights on them, rows spread_begin[k] to spread_begin[k + 1] of spread_node and
+  // spread_weight; the shared grid nodes' velocities at the window's start and end.
+  std::vector<std::int64_t> grid_keys;
+  std::vector<std::uint32_t> spread_begin, spread_node;
+  std::vector<double> spread_weight;
+  std::vector<double> grid_fe_share; ///< the interface nodes' mass spread on each, kg
+  /// Each interface node's position when the window opened, m, and its far-field velocity
+  /// gradient dv/dx then, 1/s: its velocity field is spread on the grid, affine about it.
+  std::vector<mpm::Vector3> interface_position;
+  std::vector<Eigen::Matrix3d> interface_gradient;
+  std::vector<mpm::Vector3> grid_velocity_start, grid_velocity_end;
+  double largest_interface_displacement = 0.0; ///< over the cell size, at the last placement
 
   // Multi-step window.
   double window_start = 0.0;

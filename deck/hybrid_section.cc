@@ -80,6 +80,12 @@ void declare_hybrid_section(EntryTable& table)
                 "field's mean free interface velocity plus a dashpot of its effective interface "
                 "mass; stable for windows of any length, dissipating what the far field's step "
                 "cannot carry).");
+  table.declare("Interface", "grid nodes", Patterns::Selection("grid nodes|following"),
+                "Where the far field's interface nodes meet the MPM grid: grid nodes (each is "
+                "the grid node it started on; the interface may move a quarter of a cell, which "
+                "a monitor watches) or following (each is spread over the grid nodes around "
+                "where it is now, like a material point, so the interface may move any "
+                "distance; explicit far field only; docs/hybrid_interface.md).");
   table.declare("Stop when FE points fail", "true", Patterns::Bool(),
                 "true: the run stops when a far-field quadrature point fails (totally, under "
                 "Adaptive zone failure = total: the wound has reached the FE region, whose "
@@ -120,6 +126,9 @@ void parse_hybrid_section(dealii::ParameterHandler& prm, coupling::HybridParamet
   hybrid.window_coupling = prm.get("Window coupling") == "dashpot"
                              ? coupling::WindowCoupling::dashpot
                              : coupling::WindowCoupling::balanced;
+  hybrid.interface = prm.get("Interface") == "following"
+                       ? coupling::InterfacePlacement::following
+                       : coupling::InterfacePlacement::grid_nodes;
   hybrid.stop_when_fe_points_fail = prm.get_bool("Stop when FE points fail");
   prm.leave_subsection();
 }

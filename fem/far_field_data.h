@@ -9,6 +9,9 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
+
+#include <array>
+#include <utility>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -218,6 +221,12 @@ struct FarFieldSolver::Data
   /// forces, no output; their faces next to live cells are interface faces.
   std::vector<unsigned char> cell_converted;
   unsigned long long n_converted_cells = 0; ///< over the whole mesh
+  /// Live cells (owned or ghost) with an owned interface node, each with the index in
+  /// interface_nodes of its vertices (-1: not an owned interface node); built for
+  /// interface_cells_built_for converted cells (fem/interface_velocity_gradient.cc).
+  std::vector<std::pair<dealii::DoFHandler<3>::active_cell_iterator, std::array<int, 8>>>
+    interface_cells;
+  unsigned long long interface_cells_built_for = ~0ull;
   /// Owned dofs of no live cell: no mass, held at rest, a unit-mass row in the implicit
   /// matrix (scaled by dead_dof_mass).
   std::vector<dealii::types::global_dof_index> dead_dofs;

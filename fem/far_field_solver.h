@@ -224,6 +224,9 @@ public:
   /// Interface (hole surface) nodes owned by this rank (not collective), in a fixed order;
   /// the per-node vectors below use this order.
   const std::vector<NodeRecord>& interface_nodes() const;
+  /// Velocity gradient dv/dx of each interface node (interface_nodes() order), 1/s: the mean
+  /// over its live cells of the gradient at their centres. Collective.
+  std::vector<dealii::Tensor<2, 3>> interface_velocity_gradients() const;
   /// Lumped (row-sum) FE mass of each interface node, kg.
   std::vector<double> interface_lumped_masses() const;
   /// Force the rest of the FE body transmits to each interface node at the current state, N:

@@ -21,6 +21,8 @@ struct SharedNodeState
 {
   std::vector<double> mass;   ///< kg; 0 where no point of the coupled body reaches the node
   std::vector<Vector3> force; ///< N, internal force plus gravity on the node
+  /// kg m/s, the node's own momentum before the exchange (its mass times its velocity)
+  std::vector<Vector3> momentum;
 };
 
 class InterfacePartner
@@ -33,6 +35,11 @@ public:
   virtual void exchange(double time, double dt, const SharedNodeState& mpm_side,
                         std::vector<Vector3>& velocity_start,
                         std::vector<Vector3>& velocity_end) = 0;
+  /// The partner's mass at each shared node, kg, when the nodes are not wholly the partner's
+  /// (an interface between grid nodes): MUSL's velocities, projected again from the points,
+  /// are then blended with velocity_end by the two masses at each node instead of replaced
+  /// by it. Null (the default): every shared node takes velocity_end.
+  virtual const std::vector<double>* blend_masses() const { return nullptr; }
 };
 
 /// Grid nodes shared with a partner, for one body of the MPM scene.

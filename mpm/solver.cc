@@ -407,7 +407,7 @@ void Solver::advance(const double cap)
     sum_projected_momenta_with_neighbours();
     velocities_from_momenta(grid, grid_settings, fields);
     if (shared.partner)
-      impose_shared_velocities(fields.velocity);
+      impose_shared_velocities(fields.velocity, true);
   }
   if (nonlocal_failure)
   {

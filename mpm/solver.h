@@ -277,7 +277,9 @@ private:
   void sum_shared_state_over_ranks();
   /// Sets the interface velocities of the exchange in `velocity` (the grid update's or, for
   /// MUSL, the re-projected nodal velocities).
-  void impose_shared_velocities(std::vector<Vector3>& velocity);
+  /// projected_again: MUSL's second projection (blended with the partner's velocity where it
+  /// asks for it, InterfacePartner::blend_masses).
+  void impose_shared_velocities(std::vector<Vector3>& velocity, bool projected_again);
   /// Per-point volumetric strain rate for the bulk viscosity, sized to the points; null (no
   /// memory) when the viscosity is off.
   double* volumetric_rate_or_null();

@@ -5,6 +5,13 @@
 
 #include "../fem/fem_test_scenes.h"
 #include "coupling/decomposition.h"
+#include "coupling/hybrid_solver.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <gtest/gtest.h>
+
+#include <map>
 
 namespace vulnus::coupling::testing
 {
@@ -78,6 +85,28 @@ inline mpm::SceneParameters indentation_scene()
   s.contact.friction_coefficient = -1.0; // no slip under the punch
   s.end_time = 1e-3;
   return s;
+}
+
+/// Every MPM point's position by id, over all ranks (collective): the exact starting positions
+/// (the solver keeps reference positions in single precision).
+inline std::map<std::uint32_t, mpm::Vector3> positions_on_all_ranks(const HybridSolver& solver)
+{
+  const mpm::Particles& p = solver.mpm().points();
+  std::vector<double> mine;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    mine.insert(mine.end(), {double(p.id[i]), p.position[i][0], p.position[i][1], p.position[i][2]});
+  std::map<std::uint32_t, mpm::Vector3> by_id;
+  for (const std::vector<double>& all :
+       dealii::Utilities::MPI::all_gather(solver.fe().communicator(), mine))
+    for (std::size_t k = 0; k < all.size(); k += 4)
+      by_id[static_cast<std::uint32_t>(all[k])] = mpm::Vector3(all[k + 1], all[k + 2], all[k + 3]);
+  return by_id;
+}
+
+/// Test names of the two coupling schemes.
+inline std::string scheme_name(const ::testing::TestParamInfo<CouplingScheme>& info)
+{
+  return info.param == CouplingScheme::same_step ? "same_step" : "multi_step";
 }
 
 inline HybridParameters zone(const std::array<double, 3>& lo, const std::array<double, 3>& hi,

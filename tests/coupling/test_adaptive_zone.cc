@@ -16,6 +16,7 @@ namespace vulnus::coupling
 namespace
 {
 using testing::block_scene;
+using testing::scheme_name;
 using testing::uniform_far_field;
 using testing::zone;
 
@@ -83,11 +84,6 @@ Eigen::Matrix3d patch_gradient()
     0.5, -2.0, 1.0,   //
     0.0, 1.5, 3.0;
   return 0.1 * L; // 1/s: 0.1 % strain per ms
-}
-
-std::string scheme_name(const ::testing::TestParamInfo<CouplingScheme>& info)
-{
-  return info.param == CouplingScheme::same_step ? "same_step" : "multi_step";
 }
 
 class AdaptiveZone : public ::testing::TestWithParam<CouplingScheme>

@@ -14,13 +14,10 @@ namespace vulnus::coupling
 namespace
 {
 using testing::block_scene;
+using testing::scheme_name;
+using testing::positions_on_all_ranks;
 using testing::uniform_far_field;
 using testing::zone;
-
-std::string scheme_name(const ::testing::TestParamInfo<CouplingScheme>& info)
-{
-  return info.param == CouplingScheme::same_step ? "same_step" : "multi_step";
-}
 
 class HybridPatch : public ::testing::TestWithParam<CouplingScheme>
 {
@@ -34,22 +31,6 @@ struct PatchErrors
   double velocity_scale = 0.0;
   double stress_scale = 0.0;
 };
-
-/// Every MPM point's position by id, over all ranks (collective): the exact starting positions
-/// (the solver keeps reference positions in single precision).
-std::map<std::uint32_t, mpm::Vector3> positions_on_all_ranks(const HybridSolver& solver)
-{
-  const mpm::Particles& p = solver.mpm().points();
-  std::vector<double> mine;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    mine.insert(mine.end(), {double(p.id[i]), p.position[i][0], p.position[i][1], p.position[i][2]});
-  std::map<std::uint32_t, mpm::Vector3> by_id;
-  for (const std::vector<double>& all :
-       dealii::Utilities::MPI::all_gather(solver.fe().communicator(), mine))
-    for (std::size_t k = 0; k < all.size(); k += 4)
-      by_id[static_cast<std::uint32_t>(all[k])] = mpm::Vector3(all[k + 1], all[k + 2], all[k + 3]);
-  return by_id;
-}
 
 /// Over all ranks (collective); start: every point's starting position by id.
 double worst_velocity(const HybridSolver& solver, const Eigen::Matrix3d& L,
