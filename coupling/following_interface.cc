@@ -35,12 +35,10 @@ void HybridSolver::place_interface()
   std::vector<double> weight;
   std::vector<std::uint32_t> begin(1, 0);
   std::vector<mpm::Vector3> position(keys.size());
-  double largest = 0.0;
   std::string problem;
   for (std::size_t k = 0; k < keys.size() && problem.empty(); ++k)
   {
     const mpm::Vector3 s = mpm::Vector3(packed[3 * k], packed[3 * k + 1], packed[3 * k + 2]) / h;
-    largest = std::max(largest, s.norm());
     position[k] = grid.node_position(keys[k]) + h * s;
     const std::array<int, 3> home = grid.node_ijk(keys[k]);
     int base[3];
@@ -83,7 +81,6 @@ void HybridSolver::place_interface()
   }
   if (!problem.empty())
     throw std::runtime_error(problem);
-  largest_interface_displacement = largest;
   interface_position = std::move(position);
 
   std::vector<std::int64_t> shared = node_key;

@@ -69,7 +69,6 @@ void HybridSolver::save(std::ostream& out) const
   binary::put_vector(out, spread_weight);
   binary::put_vector(out, grid_velocity_start);
   binary::put_vector(out, grid_velocity_end);
-  binary::put(out, largest_interface_displacement);
   binary::put_vector(out, interface_position);
   binary::put_vector(out, interface_gradient);
   out.write(tag, sizeof(tag));
@@ -175,7 +174,6 @@ void HybridSolver::restore(std::istream& in)
   binary::get_vector(in, spread_weight);
   binary::get_vector(in, grid_velocity_start);
   binary::get_vector(in, grid_velocity_end);
-  binary::get(in, largest_interface_displacement);
   binary::get_vector(in, interface_position);
   binary::get_vector(in, interface_gradient);
   if (follows_interface())

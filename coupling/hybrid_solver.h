@@ -379,7 +379,6 @@ private:
   std::vector<mpm::Vector3> interface_position;
   std::vector<Eigen::Matrix3d> interface_gradient;
   std::vector<mpm::Vector3> grid_velocity_start, grid_velocity_end;
-  double largest_interface_displacement = 0.0; ///< over the cell size, at the last placement
 
   // Multi-step window.
   double window_start = 0.0;
