@@ -29,10 +29,14 @@ bool is_ignored(const std::string& path, const std::vector<std::string>& ignored
 } // namespace
 
 std::string first_deck_difference(const std::string& checkpoint_deck, const std::string& deck,
-                                  const std::vector<std::string>& ignored)
+                                  const std::vector<std::string>& ignored,
+                                  const std::string& defaults,
+                                  std::vector<std::string>& taken_at_default)
 {
   const std::map<std::string, std::string> before = entries_of(checkpoint_deck);
   const std::map<std::string, std::string> now = entries_of(deck);
+  const std::map<std::string, std::string> default_value = entries_of(defaults);
+  taken_at_default.clear();
   for (const auto& [path, value] : before)
   {
     if (is_ignored(path, ignored))
@@ -44,8 +48,17 @@ std::string first_deck_difference(const std::string& checkpoint_deck, const std:
       return path + ": '" + value + "' in the checkpoint, '" + found->second + "' in the deck";
   }
   for (const auto& [path, value] : now)
-    if (!is_ignored(path, ignored) && before.count(path) == 0)
-      return path + ": absent from the checkpoint, '" + value + "' in the deck";
+  {
+    if (is_ignored(path, ignored) || before.count(path) > 0)
+      continue;
+    const auto preset = default_value.find(path);
+    if (preset == default_value.end() || preset->second != value)
+      return path + ": absent from the checkpoint, '" + value + "' in the deck" +
+             (preset == default_value.end() ? std::string()
+                                            : " (its default is '" +
+                                                preset->second + "')");
+    taken_at_default.push_back(path);
+  }
   return "";
 }
 } // namespace vulnus::deck

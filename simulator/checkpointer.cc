@@ -2,6 +2,7 @@
 #include "simulator/checkpointer.h"
 
 #include "deck/deck_difference.h"
+#include "deck/deck_reader.h"
 
 #include <filesystem>
 #include <sstream>
@@ -58,9 +59,12 @@ Checkpointer::restart(Stepper& stepper,
       (running_on == 0 ? std::string("1 process") : std::to_string(running_on) + " ranks") +
       "; restart on the same count (" +
       (written_on == 0 ? std::string("without mpirun, or -np 1") : "mpirun -np " + std::to_string(written_on)) + ")");
+  // A checkpoint written before an entry existed ran as that entry's default does.
+  const std::string defaults = deck::parameter_listing();
+  std::vector<std::string> taken_at_default;
   auto refuse_a_different_deck = [&](const std::string& checkpoint_deck, const std::string& which) {
     const std::string difference = deck::first_deck_difference(
-      checkpoint_deck, parameters.resolved_deck, restart_may_change);
+      checkpoint_deck, parameters.resolved_deck, restart_may_change, defaults, taken_at_default);
     if (!difference.empty())
       throw RestartRefused("--restart: the deck does not match the checkpoint " + which + ": " +
                            difference + ". Restart with the run's deck (" +
@@ -90,6 +94,14 @@ Checkpointer::restart(Stepper& stepper,
   o << "restarted from " << used << ": step " << stepper.step_count() << ", t = " << stepper.time()
     << " s, the outputs, the history and the warnings so far kept";
   directory.log(o.str());
+  if (!taken_at_default.empty())
+  {
+    std::string entries;
+    for (const std::string& path : taken_at_default)
+      entries += (entries.empty() ? "" : ", ") + path;
+    directory.log("the checkpoint was written before these entries existed; they keep their "
+                  "defaults: " + entries);
+  }
   return progress;
 }
 
