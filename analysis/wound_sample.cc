@@ -22,6 +22,27 @@ void append_record(std::vector<char>& bytes, const mpm::Vector3& x, const double
   std::memcpy(bytes.data() + offset + 3 * sizeof(double), &volume, sizeof(double));
   bytes[offset + 4 * sizeof(double)] = static_cast<char>(flag);
 }
+/// Collective: every rank's records, appended to the sample on rank 0 (the others keep their
+/// own).
+void append_gathered(WoundSample& sample, const mpm::RankGroup& ranks, std::vector<char> failed)
+{
+  std::vector<std::vector<char>> parts;
+  if (ranks.distributed())
+    parts = ranks.gather_to_root(failed);
+  else
+    parts.push_back(std::move(failed));
+  for (const std::vector<char>& part : parts)
+    for (std::size_t offset = 0; offset + record_size <= part.size(); offset += record_size)
+    {
+      mpm::Vector3 x;
+      double volume = 0.0;
+      std::memcpy(x.data(), part.data() + offset, 3 * sizeof(double));
+      std::memcpy(&volume, part.data() + offset + 3 * sizeof(double), sizeof(double));
+      sample.failed_position.push_back(x);
+      sample.failed_volume.push_back(volume);
+      sample.failed_flag.push_back(static_cast<std::uint8_t>(part[offset + 4 * sizeof(double)]));
+    }
+}
 } // namespace
 
 WoundSample collect_wound_sample(const mpm::Solver& solver)
@@ -103,23 +124,17 @@ WoundSample collect_wound_sample(const mpm::Solver& solver)
   ranks.sum(&sample.intact_volume, 1);
   sample.n_points = ranks.sum(static_cast<std::uint64_t>(p.size()));
 
-  std::vector<std::vector<char>> parts;
-  if (ranks.distributed())
-    parts = ranks.gather_to_root(failed);
-  else
-    parts.push_back(std::move(failed));
-  for (const std::vector<char>& part : parts)
-    for (std::size_t offset = 0; offset + record_size <= part.size(); offset += record_size)
-    {
-      mpm::Vector3 x;
-      double volume = 0.0;
-      std::memcpy(x.data(), part.data() + offset, 3 * sizeof(double));
-      std::memcpy(&volume, part.data() + offset + 3 * sizeof(double), sizeof(double));
-      sample.failed_position.push_back(x);
-      sample.failed_volume.push_back(volume);
-      sample.failed_flag.push_back(static_cast<std::uint8_t>(part[offset + 4 * sizeof(double)]));
-    }
+  append_gathered(sample, ranks, std::move(failed));
   return sample;
+}
+
+void add_failed_points(WoundSample& sample, const mpm::RankGroup& ranks,
+                       const std::vector<FailedPoint>& points)
+{
+  std::vector<char> failed;
+  for (const FailedPoint& point : points)
+    append_record(failed, point.reference_position, point.reference_volume, point.failure);
+  append_gathered(sample, ranks, std::move(failed));
 }
 
 bool left_through_exit_face(const WoundSample& sample, const mpm::Solver& solver)

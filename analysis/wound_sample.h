@@ -29,6 +29,19 @@ struct WoundSample
 /// Collective; the sample is complete on rank 0 (the others get their own share).
 WoundSample collect_wound_sample(const mpm::Solver& solver);
 
+/// A failed target point held outside the MPM solver (a hybrid's far field, on the MPM
+/// lattice).
+struct FailedPoint
+{
+  mpm::Vector3 reference_position = mpm::Vector3::Zero(); ///< m
+  double reference_volume = 0.0;                          ///< m^3
+  std::uint8_t failure = 0;                               ///< its failure flags (1, 2, 3)
+};
+
+/// Collective: adds every rank's `points` to the sample's failed points on rank 0.
+void add_failed_points(WoundSample& sample, const mpm::RankGroup& ranks,
+                       const std::vector<FailedPoint>& points);
+
 /// Whether the projectile left the target through the exit face of its path: its exit was
 /// recorded with its mass centre beyond that face's plane (a ricochet or a sideways exit is
 /// not one).

@@ -99,6 +99,15 @@ struct ConvertedPoint
   double mass = 0.0;                     ///< kg, rho0 times the reference volume
 };
 
+/// A far-field point whose tissue has failed, on the MPM lattice: what a conversion would make
+/// of its cell, for the wound figures.
+struct FailedLatticePoint
+{
+  dealii::Point<3> reference_position; ///< m
+  double reference_volume = 0.0;       ///< m^3
+  std::uint8_t failure = 0;            ///< the flag of the Gauss point in its octant
+};
+
 /// Statistics of the last implicit step.
 /// Wall-clock seconds of the explicit steps since the start, by phase.
 struct FePhaseTimes
@@ -276,6 +285,10 @@ public:
   std::vector<ConvertedPoint> material_points_inside(const std::array<double, 3>& box_min,
                                                      const std::array<double, 3>& box_max,
                                                      unsigned int points_per_axis) const;
+  /// This rank's failed far-field tissue as lattice points (fem/far_field_failed_points.cc):
+  /// every live cell with a failed Gauss point gives the midpoints of round(width / spacing)^3
+  /// equal sub-cells, as a conversion would, and each failed one is listed. Linear elements.
+  std::vector<FailedLatticePoint> failed_lattice_points(double spacing) const;
   /// Collective: switches off every cell whose centre lies inside [box_min, box_max] (cells
   /// already off stay off). They keep their place in the mesh and the dof numbering, so the
   /// rest of the state stays where it is; the faces they share with live cells become

@@ -18,6 +18,20 @@ namespace vulnus::simulator
 {
 namespace
 {
+/// Collective: the far field's failed tissue joins the wound figures on the MPM lattice (the
+/// far field carries matrix failure up to its conversion under `Adaptive zone failure =
+/// total`, and the points of a cell are counted as its conversion would make them).
+void add_far_field_failures(analysis::WoundSample& wound, const coupling::HybridSolver& solver)
+{
+  std::vector<analysis::FailedPoint> points;
+  if (wound.point_spacing > 0.0)
+    for (const fem::FailedLatticePoint& p : solver.fe().failed_lattice_points(wound.point_spacing))
+      points.push_back({mpm::Vector3(p.reference_position[0], p.reference_position[1],
+                                     p.reference_position[2]),
+                        p.reference_volume, p.failure});
+  analysis::add_failed_points(wound, solver.mpm().rank_group(), points);
+}
+
 const char* scheme_name(const coupling::CouplingScheme s)
 {
   return s == coupling::CouplingScheme::same_step ? "same step" : "multi step";
@@ -261,7 +275,8 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
   analysis::RunTotals totals = run;
   totals.projectile_initial_speed = projectile.speed;
   totals.projectile_initial_kinetic_energy = projectile.kinetic_energy;
-  const analysis::WoundSample wound = analysis::collect_wound_sample(mpm_side); // collective
+  analysis::WoundSample wound = analysis::collect_wound_sample(mpm_side); // collective
+  add_far_field_failures(wound, solver);                                  // collective
   const mpm::SceneDiagnostics m = mpm_side.diagnostics();
   const fem::FeDiagnostics fe = solver.fe().diagnostics();
   const std::array<mpm::Vector3, 6> supports = mpm_side.support_impulses(); // collective

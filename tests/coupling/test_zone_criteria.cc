@@ -4,7 +4,8 @@
 // under the distortion bound and under nothing else; each conversion records which rule
 // asked for it; a block sheared past the matrix's failure converts under the any-failure
 // rule, and under the total-failure rule the far field carries the failed matrix with the
-// stress the MPM points in the same state carry.
+// stress the MPM points in the same state carry, and gives the wound figures its failed
+// tissue on the MPM lattice.
 #include "coupling/hybrid_solver.h"
 #include "materials/material_registry.h"
 #include "hybrid_test_scenes.h"
@@ -182,6 +183,22 @@ TEST(ZoneCriteria, MatrixFailureConvertsUnderTheAnyRuleAndStaysInTheFarFieldUnde
   }
   EXPECT_GT(matrix_failed_cells, 0.95 * mesh.failure.size());
   ASSERT_GT(pressure_only, 0.25 * matrix_failed_cells);
+
+  // The wound figures count the far field's failed tissue as its conversion would make it:
+  // 2 x 2 x 2 lattice points per 1 mm cell, each matrix-failed where its octant's Gauss point
+  // is, together the volume of the failed octants (at most the failed cells', and all of it
+  // where every Gauss point of a failed cell has failed).
+  const double h = 1e-3;
+  const std::vector<fem::FailedLatticePoint> lattice = fe.failed_lattice_points(0.5 * h);
+  double lattice_volume = 0.0;
+  for (const fem::FailedLatticePoint& p : lattice)
+  {
+    ASSERT_EQ(p.failure, materials::matrix_failed);
+    ASSERT_NEAR(p.reference_volume, 0.125 * h * h * h, 1e-12 * h * h * h);
+    lattice_volume += p.reference_volume;
+  }
+  EXPECT_LE(lattice_volume, matrix_failed_cells * h * h * h * (1.0 + 1e-12));
+  EXPECT_GT(lattice_volume, 0.9 * matrix_failed_cells * h * h * h);
   EXPECT_NEAR(fe_pressure / pressure_only, pressure, 0.02 * pressure);
 
   // The MPM zone's matrix-failed points, under the same law, carry the same mean pressure
