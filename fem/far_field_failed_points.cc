@@ -17,6 +17,8 @@ std::vector<FailedLatticePoint> FarFieldSolver::failed_lattice_points(const doub
 {
   const Data& d = *data;
   AssertThrow(spacing > 0.0, ExcMessage("failed_lattice_points needs a positive spacing"));
+  AssertThrow(d.prm.degree == 1 && (d.n_q_points == 8 || d.n_q_points == 1),
+              ExcMessage("failed lattice points from a far field need linear elements"));
   std::vector<FailedLatticePoint> points;
   for (const auto& cell : d.dof_handler.active_cell_iterators())
   {
@@ -40,7 +42,8 @@ std::vector<FailedLatticePoint> FarFieldSolver::failed_lattice_points(const doub
         d.n_q_points == 1 ? 0 : (xi[0] > 0.5) + 2 * (xi[1] > 0.5) + 4 * (xi[2] > 0.5);
       const std::uint8_t failure = states[gauss].failure;
       if (failure != 0)
-        points.push_back({fe_values.quadrature_point(q), fe_values.JxW(q), failure});
+        points.push_back({fe_values.quadrature_point(q), fe_values.JxW(q), failure,
+                          d.cell_stress[cell->active_cell_index()]});
     }
   }
   return points;

@@ -106,6 +106,7 @@ struct FailedLatticePoint
   dealii::Point<3> reference_position; ///< m
   double reference_volume = 0.0;       ///< m^3
   std::uint8_t failure = 0;            ///< the flag of the Gauss point in its octant
+  dealii::Tensor<2, 3> cell_stress;    ///< Pa, its cell's Cauchy stress (debris: a pressure alone)
 };
 
 /// Statistics of the last implicit step.
@@ -287,7 +288,9 @@ public:
                                                      unsigned int points_per_axis) const;
   /// This rank's failed far-field tissue as lattice points (fem/far_field_failed_points.cc):
   /// every live cell with a failed Gauss point gives the midpoints of round(width / spacing)^3
-  /// equal sub-cells, as a conversion would, and each failed one is listed. Linear elements.
+  /// equal sub-cells, as a conversion of a grid-sized cell would, and each failed one is listed
+  /// with the flag of the Gauss point of its octant (a midpoint on a cell's mid-plane, with an
+  /// odd count, takes the lower octant's). Linear elements.
   std::vector<FailedLatticePoint> failed_lattice_points(double spacing) const;
   /// Collective: switches off every cell whose centre lies inside [box_min, box_max] (cells
   /// already off stay off). They keep their place in the mesh and the dof numbering, so the

@@ -20,15 +20,24 @@ namespace
 {
 /// Collective: the far field's failed tissue joins the wound figures on the MPM lattice (the
 /// far field carries matrix failure up to its conversion under `Adaptive zone failure =
-/// total`, and the points of a cell are counted as its conversion would make them).
+/// total`, and the points of a cell are counted as its conversion would make them), as debris
+/// where its cell carries a pressure alone, as for the MPM points.
 void add_far_field_failures(analysis::WoundSample& wound, const coupling::HybridSolver& solver)
 {
   std::vector<analysis::FailedPoint> points;
   if (wound.point_spacing > 0.0)
     for (const fem::FailedLatticePoint& p : solver.fe().failed_lattice_points(wound.point_spacing))
+    {
+      const dealii::Tensor<2, 3>& s = p.cell_stress;
+      Eigen::Matrix<double, 6, 1> voigt;
+      voigt << s[0][0], s[1][1], s[2][2], s[0][1], s[1][2], s[0][2];
+      const bool debris = analysis::carries_no_deviatoric_stress(voigt);
       points.push_back({mpm::Vector3(p.reference_position[0], p.reference_position[1],
                                      p.reference_position[2]),
-                        p.reference_volume, p.failure});
+                        p.reference_volume,
+                        static_cast<std::uint8_t>(debris ? p.failure | analysis::debris_bit
+                                                         : p.failure)});
+    }
   analysis::add_failed_points(wound, solver.mpm().rank_group(), points);
 }
 

@@ -199,6 +199,16 @@ TEST(ZoneCriteria, MatrixFailureConvertsUnderTheAnyRuleAndStaysInTheFarFieldUnde
   }
   EXPECT_LE(lattice_volume, matrix_failed_cells * h * h * h * (1.0 + 1e-12));
   EXPECT_GT(lattice_volume, 0.9 * matrix_failed_cells * h * h * h);
+  // Each carries its cell's stress, so the wound's debris (a pressure alone) is the cells'.
+  std::size_t pressure_only_points = 0;
+  for (const fem::FailedLatticePoint& p : lattice)
+  {
+    const double mean = dealii::trace(p.cell_stress) / 3.0;
+    const double deviator = (p.cell_stress - mean * dealii::unit_symmetric_tensor<3>()).norm();
+    pressure_only_points += deviator <= 1e-6 * std::abs(mean) ? 1 : 0;
+  }
+  EXPECT_GT(pressure_only_points, 0u);
+  EXPECT_LE(pressure_only_points, 8 * pressure_only);
   EXPECT_NEAR(fe_pressure / pressure_only, pressure, 0.02 * pressure);
 
   // The MPM zone's matrix-failed points, under the same law, carry the same mean pressure
