@@ -1,6 +1,7 @@
 // The far field's side of an adaptive MPM zone: which cells near failure (kept by every force
-// evaluation), the material points of cells about to convert, and their conversion: the cells
-// stay in the mesh, switched off, and the faces they share with live cells join the interface.
+// evaluation), the material points of cells about to convert (and of failed cells, for the wound
+// figures), and their conversion: the cells stay in the mesh, switched off, and the faces they
+// share with live cells join the interface.
 #include "fem/far_field_data.h"
 #include "fem/tensor_conversion.h"
 #include "fem/volume_averaged_cell.h"
@@ -8,6 +9,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace vulnus::fem
 {
@@ -40,6 +44,20 @@ void evaluate_cell(const FEValues<3>& fe_values, const std::vector<types::global
       out.v[q][c] += v(dofs[i]) * fe_values.shape_value_component(i, q, c);
     }
   }
+}
+
+/// Points of a far field's cell need linear elements, each Gauss point owning an octant.
+void require_linear_elements(const FarFieldSolver::Data& d)
+{
+  AssertThrow(d.prm.degree == 1 && (d.n_q_points == 8 || d.n_q_points == 1),
+              ExcMessage("material points from a far field need linear elements"));
+}
+
+/// The Gauss point (2 x 2 x 2 Gauss, x fastest) in the octant of the unit-cell point xi, or the
+/// one point; a point on a mid-plane takes the lower octant's.
+unsigned int gauss_point_of_octant(const Point<3>& xi, const unsigned int n_q_points)
+{
+  return n_q_points == 1 ? 0 : (xi[0] > 0.5) + 2 * (xi[1] > 0.5) + 4 * (xi[2] > 0.5);
 }
 
 /// A cell belongs to a box when its centre lies strictly inside (box faces are mesh planes).
@@ -76,8 +94,7 @@ FarFieldSolver::material_points_inside(const std::array<double, 3>& box_min,
                                        const unsigned int points_per_axis) const
 {
   const Data& d = *data;
-  AssertThrow(d.prm.degree == 1 && (d.n_q_points == 8 || d.n_q_points == 1),
-              ExcMessage("material points from a far field need linear elements"));
+  require_linear_elements(d);
   // Midpoints of n x n x n sub-cells: the MPM lattice, and exact for the trilinear fields'
   // mass and momentum.
   const QIterated<3> lattice(QMidpoint<1>(), points_per_axis);
@@ -115,11 +132,8 @@ FarFieldSolver::material_points_inside(const std::array<double, 3>& box_min,
     const std::size_t first = std::size_t(cell->active_cell_index()) * d.n_q_points;
     for (unsigned int q = 0; q < lattice.size(); ++q)
     {
-      // The history of the Gauss point in the same octant (2 x 2 x 2 Gauss, x fastest), or
-      // of the one point.
-      const Point<3>& xi = lattice.point(q);
-      const unsigned int gauss =
-        d.n_q_points == 1 ? 0 : (xi[0] > 0.5) + 2 * (xi[1] > 0.5) + 4 * (xi[2] > 0.5);
+      // The history of the Gauss point in the same octant.
+      const unsigned int gauss = gauss_point_of_octant(lattice.point(q), d.n_q_points);
       ConvertedPoint p;
       p.reference_position = fe_values.quadrature_point(q);
       p.displacement = k.u[q];
@@ -186,5 +200,36 @@ void FarFieldSolver::convert_cells_inside(const std::array<double, 3>& box_min,
   d.reset_booked_dirichlet_velocities();
   d.interface_impulse_last_step.assign(d.interface_nodes.size(), Tensor<1, 3>());
   d.last_power = d.external_power();
+}
+std::vector<FailedLatticePoint> FarFieldSolver::failed_lattice_points(const double spacing) const
+{
+  const Data& d = *data;
+  AssertThrow(spacing > 0.0, ExcMessage("failed_lattice_points needs a positive spacing"));
+  require_linear_elements(d);
+  std::vector<FailedLatticePoint> points;
+  for (const auto& cell : d.dof_handler.active_cell_iterators())
+  {
+    if (!d.owns_live(cell))
+      continue;
+    const std::size_t first = std::size_t(cell->active_cell_index()) * d.n_q_points;
+    const auto states = d.committed_states.begin() + static_cast<std::ptrdiff_t>(first);
+    if (std::all_of(states, states + d.n_q_points,
+                    [](const materials::PointState& s) { return s.failure == 0; }))
+      continue;
+    const unsigned int per_axis = static_cast<unsigned int>(
+      std::max(1L, std::lround(cell->extent_in_direction(0) / spacing)));
+    const QIterated<3> lattice(QMidpoint<1>(), per_axis);
+    FEValues<3> fe_values(d.mapping, d.fe, lattice, update_JxW_values | update_quadrature_points);
+    fe_values.reinit(cell);
+    for (unsigned int q = 0; q < lattice.size(); ++q)
+    {
+      const unsigned int gauss = gauss_point_of_octant(lattice.point(q), d.n_q_points);
+      const std::uint8_t failure = states[gauss].failure;
+      if (failure != 0)
+        points.push_back({fe_values.quadrature_point(q), fe_values.JxW(q), failure,
+                          d.cell_stress[cell->active_cell_index()]});
+    }
+  }
+  return points;
 }
 } // namespace vulnus::fem

@@ -286,7 +286,7 @@ public:
   std::vector<ConvertedPoint> material_points_inside(const std::array<double, 3>& box_min,
                                                      const std::array<double, 3>& box_max,
                                                      unsigned int points_per_axis) const;
-  /// This rank's failed far-field tissue as lattice points (fem/far_field_failed_points.cc):
+  /// This rank's failed far-field tissue as lattice points (fem/far_field_conversion.cc):
   /// every live cell with a failed Gauss point gives the midpoints of round(width / spacing)^3
   /// equal sub-cells, as a conversion of a grid-sized cell would, and each failed one is listed
   /// with the flag of the Gauss point of its octant (a midpoint on a cell's mid-plane, with an

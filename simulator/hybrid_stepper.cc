@@ -3,6 +3,7 @@
 
 #include "analysis/wound_sample.h"
 #include "fem/face_support.h"
+#include "fem/tensor_conversion.h"
 #include "io/run_directory.h"
 #include "simulator/hybrid_history.h"
 #include "simulator/rigid_hold_report.h"
@@ -28,10 +29,8 @@ void add_far_field_failures(analysis::WoundSample& wound, const coupling::Hybrid
   if (wound.point_spacing > 0.0)
     for (const fem::FailedLatticePoint& p : solver.fe().failed_lattice_points(wound.point_spacing))
     {
-      const dealii::Tensor<2, 3>& s = p.cell_stress;
-      Eigen::Matrix<double, 6, 1> voigt;
-      voigt << s[0][0], s[1][1], s[2][2], s[0][1], s[1][2], s[0][2];
-      const bool debris = analysis::carries_no_deviatoric_stress(voigt);
+      const bool debris =
+        analysis::carries_no_deviatoric_stress(mpm::symmetric_part(fem::to_eigen(p.cell_stress)));
       points.push_back({mpm::Vector3(p.reference_position[0], p.reference_position[1],
                                      p.reference_position[2]),
                         p.reference_volume,

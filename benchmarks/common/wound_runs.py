@@ -94,6 +94,26 @@ def scale_of(figure, reference, total):
     return scale
 
 
+def deck_entry(deck, path):
+    """The value of `path` ('Section/Sub/Entry') in a deck file, or None when it is not set."""
+    *sections, entry = path.split("/")
+    stack = []
+    with open(deck, encoding="utf-8") as f:
+        for line in f:
+            words = line.split("#", 1)[0].split()
+            if not words:
+                continue
+            if words[0] == "subsection":
+                stack.append(" ".join(words[1:]))
+            elif words[0] == "end":
+                stack.pop()
+            elif words[0] == "set" and stack == sections:
+                name, _, text = " ".join(words[1:]).partition("=")
+                if name.strip() == entry:
+                    return text.strip()
+    return None
+
+
 def completed_summary(directory):
     path = os.path.join(directory, "summary.json")
     if not os.path.isfile(path):
