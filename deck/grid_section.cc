@@ -96,6 +96,23 @@ void declare_grid_section(EntryTable& table)
                 "stop: a point leaving the grid ends the run as a blow-up (last good state "
                 "kept); remove: it is removed and its energy and momentum booked as outflow "
                 "(fragments flying off the exit face).");
+  table.enter("Grading");
+  table.declare("Largest cell", "1", Patterns::Double(1.0, 64.0),
+                "The widest cell of a graded grid, in cells of Cell size [-]; 1 (the default) "
+                "is a uniform grid. Cells are Cell size h inside the fine box and h min(Largest "
+                "cell, 1 + d / Growth length) at a distance d outside it, along each axis; "
+                "halving h halves every cell. Linear shape functions, MUSL, Volume averaging "
+                "none or cell, one MPI rank, a pure MPM scene and Contact/Rigid surface = exact "
+                "only (docs/graded_grid.md).");
+  table.declare("Growth length", "0.002", Patterns::Double(0.0),
+                "Distance from the fine box over which a graded grid's cells double [m]; > 0.");
+  table.declare("Fine box min", "0, 0, 0", point_pattern(),
+                "Lower corner of the box of h-wide cells, `x, y, z` [m]; in an axisymmetric "
+                "scene its x and z are -R_f (the fine radius R_f).");
+  table.declare("Fine box max", "0, 0, 0", point_pattern(),
+                "Upper corner of the box of h-wide cells, `x, y, z` [m]; it must hold the "
+                "projectile's path and the wound around it.");
+  table.leave();
   table.enter("Boundary conditions");
   for (unsigned int face = 0; face < 6; ++face)
   {
@@ -117,6 +134,17 @@ void parse_grid_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   scene.domain_max = get_point(prm, "Domain max");
   scene.cell_size = prm.get_double("Cell size");
   scene.axisymmetric = prm.get("Dimension") == "axisymmetric";
+  prm.enter_subsection("Grading");
+  scene.grading.largest_cells = prm.get_double("Largest cell");
+  scene.grading.growth_length = prm.get_double("Growth length");
+  const Eigen::Vector3d fine_min = get_point(prm, "Fine box min");
+  const Eigen::Vector3d fine_max = get_point(prm, "Fine box max");
+  for (int d = 0; d < 3; ++d)
+  {
+    scene.grading.fine_min[d] = fine_min[d];
+    scene.grading.fine_max[d] = fine_max[d];
+  }
+  prm.leave_subsection();
   const std::string shape = prm.get("Shape function");
   scene.shape_function = shape == "gimp"   ? mpm::ShapeFunction::gimp
                          : shape == "cpdi" ? mpm::ShapeFunction::cpdi

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace vulnus::mpm
 {
@@ -95,35 +96,84 @@ double gap_to_domain_face(const SceneParameters& scene, const BodyParameters& bo
 
 namespace
 {
+/// The lattice of one axis over [lower, upper]: n points per cell at sub-cell centres, each
+/// with its spacing (the cell's width / n).
+struct AxisLattice
+{
+  std::vector<double> position, spacing;
+};
+
+AxisLattice axis_lattice(const Grid& grid, const int axis, const double lower, const double upper,
+                         const unsigned int n)
+{
+  AxisLattice lattice;
+  const double origin = grid.origin()[axis];
+  if (!grid.graded())
+  {
+    const double spacing = grid.cell_size() / n;
+    const long first = static_cast<long>(std::floor((lower - origin) / spacing));
+    const long last = static_cast<long>(std::ceil((upper - origin) / spacing));
+    for (long i = first; i <= last; ++i)
+    {
+      lattice.position.push_back(origin + spacing * (i + 0.5));
+      lattice.spacing.push_back(spacing);
+    }
+    return lattice;
+  }
+  const auto cell_of = [&](const double x)
+  {
+    const int c = static_cast<int>(std::floor(grid.to_cell_units(Vector3::Constant(x))[axis]));
+    return std::clamp(c, -Grid::padding, grid.cells()[axis] + Grid::padding - 1);
+  };
+  const int first = cell_of(lower), last = cell_of(upper);
+  // A cell the body's box cuts gets its n points over the part inside the box, so that a face
+  // of the body along the grid's axes (a block's, or a cylinder's ends and, in axisymmetry, its
+  // radius) is where the body ends, even in a wide cell.
+  for (int c = first; c <= last; ++c)
+  {
+    const double start = std::max(lower, grid.node_coordinate(axis, c));
+    const double end = std::min(upper, grid.node_coordinate(axis, c) + grid.cell_width(axis, c));
+    if (!(end > start))
+      continue;
+    const double spacing = (end - start) / n;
+    for (unsigned int a = 0; a < n; ++a)
+    {
+      lattice.position.push_back(start + spacing * (a + 0.5));
+      lattice.spacing.push_back(spacing);
+    }
+  }
+  return lattice;
+}
+
 /// Calls f(x, volume) for each lattice point of `body` (n per cell and axis, at sub-cell
 /// centres). On an axisymmetric grid the lattice is the r-y plane's (z = 0, r > 0) and each
 /// point the ring it sweeps about the axis.
 template <class F> void for_each_point_of(const BodyParameters& body, const Grid& grid, F&& f)
 {
-  const double spacing = grid.cell_size() / body.particles_per_cell;
   Vector3 lower = Vector3::Zero(), upper = Vector3::Zero();
   body_bounding_box(body, lower, upper);
-  std::array<long, 3> first, last;
+  std::array<AxisLattice, 3> axis;
   for (int d = 0; d < 3; ++d)
-  {
-    first[d] = static_cast<long>(std::floor((lower[d] - grid.origin()[d]) / spacing));
-    last[d] = static_cast<long>(std::ceil((upper[d] - grid.origin()[d]) / spacing));
-  }
+    axis[d] = axis_lattice(grid, d, lower[d], upper[d], body.particles_per_cell);
   if (grid.axisymmetric())
   {
-    first[0] = std::max(first[0], 0L);
-    first[2] = last[2] = 0;
+    std::size_t first_r = 0;
+    while (first_r < axis[0].position.size() && axis[0].position[first_r] < 0.0)
+      ++first_r;
+    axis[0].position.erase(axis[0].position.begin(), axis[0].position.begin() + first_r);
+    axis[0].spacing.erase(axis[0].spacing.begin(), axis[0].spacing.begin() + first_r);
+    axis[2].position.assign(1, 0.0);
+    axis[2].spacing.assign(1, grid.cell_size() / body.particles_per_cell);
   }
-  const double cube = spacing * spacing * spacing;
-  for (long k = first[2]; k <= last[2]; ++k)
-    for (long j = first[1]; j <= last[1]; ++j)
-      for (long i = first[0]; i <= last[0]; ++i)
+  for (std::size_t k = 0; k < axis[2].position.size(); ++k)
+    for (std::size_t j = 0; j < axis[1].position.size(); ++j)
+      for (std::size_t i = 0; i < axis[0].position.size(); ++i)
       {
-        Vector3 x = grid.origin() + spacing * Vector3(i + 0.5, j + 0.5, k + 0.5);
-        if (grid.axisymmetric())
-          x[2] = 0.0;
-        if (body_contains(body, x))
-          f(x, grid.axisymmetric() ? ring_volume(x[0], spacing * spacing) : cube);
+        const Vector3 x(axis[0].position[i], axis[1].position[j], axis[2].position[k]);
+        if (!body_contains(body, x))
+          continue;
+        const double area = axis[0].spacing[i] * axis[1].spacing[j];
+        f(x, grid.axisymmetric() ? ring_volume(x[0], area) : area * axis[2].spacing[k]);
       }
 }
 } // namespace

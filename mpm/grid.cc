@@ -9,7 +9,14 @@ namespace vulnus::mpm
 {
 Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double cell_size,
            const bool axisymmetric)
-    : domain_min(domain_min_), h(cell_size), inverse_h(1.0 / cell_size), of_revolution(axisymmetric)
+  : Grid(domain_min_, domain_max_, cell_size, axisymmetric, GridGrading())
+{
+}
+
+Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double cell_size,
+           const bool axisymmetric, const GridGrading& grading)
+    : domain_min(domain_min_), h(cell_size), inverse_h(1.0 / cell_size), of_revolution(axisymmetric),
+      is_graded(grading.enabled())
 {
   if (!(cell_size > 0.0))
     throw std::invalid_argument("Grid: the cell size must be positive");
@@ -20,12 +27,36 @@ Grid::Grid(const Vector3& domain_min_, const Vector3& domain_max_, const double 
       throw std::invalid_argument("Grid: the domain maximum must exceed the minimum along axis " +
                                   std::to_string(d));
   }
-  n_cells = cell_counts(domain_min_, domain_max_, cell_size);
-  if (axisymmetric)
-    n_cells[2] = 1;
+  if (!is_graded)
+  {
+    n_cells = cell_counts(domain_min_, domain_max_, cell_size);
+    if (axisymmetric)
+      n_cells[2] = 1;
+    domain_max = domain_min + h * Vector3(n_cells[0], n_cells[1], n_cells[2]);
+    allocate_node_box();
+    return;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    // The r-y plane is one h-wide cell across.
+    const bool across_plane = axisymmetric && d == 2;
+    axes[d] = across_plane
+                ? GridAxis(domain_min_[d], domain_min_[d] + h, h, domain_min_[d],
+                           domain_min_[d] + h, grading.growth_length, 1.0, padding)
+                : GridAxis(domain_min_[d], domain_max_[d], h, grading.fine_min[d],
+                           grading.fine_max[d], grading.growth_length, grading.largest_cells,
+                           padding);
+    n_cells[d] = axes[d].cells();
+    domain_min[d] = axes[d].node(0);
+    domain_max[d] = axes[d].upper();
+  }
+  allocate_node_box();
+}
+
+void Grid::allocate_node_box()
+{
   for (int d = 0; d < 3; ++d)
     n_nodes_box[d] = n_cells[d] + 1 + 2 * padding;
-  domain_max = domain_min + h * Vector3(n_cells[0], n_cells[1], n_cells[2]);
   const std::int64_t n_box = n_nodes_box[0] * n_nodes_box[1] * n_nodes_box[2];
   if (n_box > std::int64_t(1) << 31)
     throw std::invalid_argument("Grid: more than 2^31 nodes in the grid box; use larger cells");
@@ -52,7 +83,7 @@ std::array<int, 3> Grid::node_ijk(const std::int64_t key) const
 Vector3 Grid::node_position(const std::int64_t key) const
 {
   const auto ijk = node_ijk(key);
-  Vector3 x = domain_min + h * Vector3(ijk[0], ijk[1], ijk[2]);
+  Vector3 x(node_coordinate(0, ijk[0]), node_coordinate(1, ijk[1]), node_coordinate(2, ijk[2]));
   if (of_revolution) // a node of the r-y plane stands for its ring, in the plane z = 0
     x[2] = 0.0;
   return x;

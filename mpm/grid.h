@@ -1,7 +1,10 @@
-// Structured background grid of cubic cells with a sparse set of active nodes: node data is
-// stored only for nodes that receive mass this step, found through a dense 4-byte lookup
-// table over the padded box (so node storage and node loops follow the particles).
+// Structured background grid, of cubic cells or graded (h-wide cells in a fine box, wider ones
+// outside: mpm/grid_axis.h), with a sparse set of active nodes: node data is stored only for
+// nodes that receive mass this step, found through a dense 4-byte lookup table over the padded
+// box (so node storage and node loops follow the particles).
 #pragma once
+
+#include "mpm/grid_axis.h"
 
 #include <Eigen/Core>
 
@@ -24,21 +27,46 @@ public:
   /// (mpm/axisymmetry.h); shape functions then have no z gradient.
   Grid(const Vector3& domain_min, const Vector3& domain_max, double cell_size,
        bool axisymmetric = false);
+  /// A graded grid when `grading.enabled()` (linear shape functions only): cell_size() is then
+  /// the finest cell, the fine box's.
+  Grid(const Vector3& domain_min, const Vector3& domain_max, double cell_size, bool axisymmetric,
+       const GridGrading& grading);
 
   /// Cells along each axis of the grid over [domain_min, domain_max] (the box is rounded up
   /// to whole cells), without building it.
   static std::array<int, 3> cell_counts(const Vector3& domain_min, const Vector3& domain_max,
                                         double cell_size);
 
+  /// The cells' edge, or on a graded grid the finest cells' edge.
   double cell_size() const { return h; }
   bool axisymmetric() const { return of_revolution; }
+  bool graded() const { return is_graded; }
+  /// 1 / cell_size(): a uniform grid's shape function gradient scale.
   double inverse_cell_size() const { return inverse_h; }
+  /// Width of cell i along `axis` and its inverse (cell_size() on a uniform grid).
+  double cell_width(const int axis, const int i) const { return is_graded ? axes[axis].width(i) : h; }
+  double inverse_cell_width(const int axis, const int i) const
+  {
+    return is_graded ? axes[axis].inverse_width(i) : inverse_h;
+  }
+  /// Coordinate of node i along `axis`.
+  double node_coordinate(const int axis, const int i) const
+  {
+    return is_graded ? axes[axis].node(i) : domain_min[axis] + h * i;
+  }
   const Vector3& origin() const { return domain_min; }
   const Vector3& upper_corner() const { return domain_max; }
   const std::array<int, 3>& cells() const { return n_cells; }
 
-  /// Position in cell units relative to the domain minimum.
-  Vector3 to_cell_units(const Vector3& x) const { return (x - domain_min) * inverse_h; }
+  /// Position in cell units: i + (x - x_i) / w_i along each axis in the cell i holding x
+  /// ((x - domain minimum) / h on a uniform grid).
+  Vector3 to_cell_units(const Vector3& x) const
+  {
+    if (!is_graded)
+      return (x - domain_min) * inverse_h;
+    return Vector3(axes[0].to_cell_units(x[0]), axes[1].to_cell_units(x[1]),
+                   axes[2].to_cell_units(x[2]));
+  }
 
   /// True when node (i, j, k) lies inside the padded node box.
   bool has_node(const int i, const int j, const int k) const
@@ -99,6 +127,8 @@ private:
   double h = 1.0;
   double inverse_h = 1.0;
   bool of_revolution = false;
+  bool is_graded = false;
+  std::array<GridAxis, 3> axes;
   std::array<int, 3> n_cells{{0, 0, 0}};
   std::array<std::int64_t, 3> n_nodes_box{{0, 0, 0}};
   // Before numbering, slot_of_key holds marks: unmarked, contested, or the one share.
@@ -111,5 +141,7 @@ private:
   bool cells_marked = false;
   std::vector<std::int32_t> contested_of_slot;
   std::vector<std::int32_t> contested;
+
+  void allocate_node_box();
 };
 } // namespace vulnus::mpm

@@ -11,9 +11,9 @@
 namespace vulnus::mpm
 {
 ProjectileSubcycle::ProjectileSubcycle(const Grid& scene_grid, const SubcycleStages& settings)
-  : grid(scene_grid.origin(), scene_grid.upper_corner(), scene_grid.cell_size(),
-         scene_grid.axisymmetric()), stages(settings)
+  : grid(scene_grid), stages(settings)
 {
+  grid.clear_active_nodes(); // the scene's nodes, none of them active for this body yet
   // One body on its own grid: no contact, and no ownership test (every rank of a distributed
   // run advances the whole body; the scene's test would look its keys up in the scene's grid).
   stages.grid_update.contact = false;

@@ -3,6 +3,7 @@
 // consumed by the MPM solver. SI units.
 #pragma once
 
+#include "mpm/grid_axis.h"
 #include "scene/scene_description.h"
 
 namespace vulnus::mpm
@@ -87,9 +88,11 @@ struct ContactParameters
 };
 
 /// The scene and the MPM numerics: the background grid is a structured grid of cubic cells of
-/// cell_size covering [domain_min, domain_max].
+/// cell_size covering [domain_min, domain_max], or a graded one (mpm/grid_axis.h).
 struct SceneParameters : scene::SceneDescription
 {
+  /// Cells wider than cell_size outside a fine box (Grid/Grading); disabled by default.
+  GridGrading grading;
   ShapeFunction shape_function = ShapeFunction::linear;
   UpdateScheme update_scheme = UpdateScheme::musl;
   ContactParameters contact;

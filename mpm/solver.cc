@@ -19,7 +19,8 @@ namespace vulnus::mpm
 {
 Solver::Solver(const SceneParameters& deck, const MPI_Comm communicator)
   : parameters(deck.axisymmetric ? plane_of_revolution(deck) : deck), ranks(communicator),
-    grid(parameters.domain_min, parameters.domain_max, parameters.cell_size, parameters.axisymmetric)
+    grid(parameters.domain_min, parameters.domain_max, parameters.cell_size, parameters.axisymmetric,
+         parameters.grading)
 {
   const SceneParameters& scene = parameters;
   if (scene.axisymmetric && ranks.distributed())

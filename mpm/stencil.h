@@ -1,6 +1,7 @@
 // Visits the grid nodes a material point touches with their weight and weight gradient (and,
 // for visitors that take it, the node's offset x_i - x_p), for linear, uGIMP or CPDI1 shape
-// functions (compile-time choice so the loops unroll). CPDI reads the point's deformation
+// functions (compile-time choice so the loops unroll); a graded grid takes linear ones only,
+// whose tents in cell units are the tents of its uneven nodes. CPDI reads the point's deformation
 // gradient; the others ignore it.
 #pragma once
 
@@ -10,6 +11,7 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <limits>
 #include <type_traits>
@@ -52,7 +54,13 @@ inline void visit_node(const Grid& grid, const Vector3& s, const int i, const in
   if constexpr (std::is_invocable_v<Visitor, std::int64_t, double, const Vector3&, const Vector3&>)
   {
     const Vector3 offset(i - s[0], j - s[1], k - s[2]);
-    visit(key, weight, gradient, (grid.cell_size() * offset).eval());
+    if (!grid.graded())
+      visit(key, weight, gradient, (grid.cell_size() * offset).eval());
+    else // node i is a corner of the point's cell along each axis (linear shape functions)
+      visit(key, weight, gradient,
+            Vector3(offset[0] * grid.cell_width(0, int(std::floor(s[0]))),
+                    offset[1] * grid.cell_width(1, int(std::floor(s[1]))),
+                    offset[2] * grid.cell_width(2, int(std::floor(s[2])))));
   }
   else
     visit(key, weight, gradient);
@@ -177,7 +185,10 @@ inline void for_each_node(const Grid& grid, const double half_size_cells, const 
     for (int d = 0; d < 3; ++d)
     {
       if constexpr (shape == ShapeFunction::linear)
-        linear_axis_weights(s[d], inverse_h, w[d]);
+        linear_axis_weights(s[d],
+                            grid.graded() ? grid.inverse_cell_width(d, int(std::floor(s[d])))
+                                          : inverse_h,
+                            w[d]);
       else
         gimp_axis_weights(s[d], half_size_cells, inverse_h, w[d]);
     }

@@ -8,6 +8,8 @@
 
 #include <omp.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -21,6 +23,34 @@ ProjectileStart projectile_start(const mpm::Solver& solver)
   const mpm::BodySummary& b = initial.bodies[solver.projectile()];
   return {b.velocity.dot(solver.flight_direction()), b.kinetic_energy};
 }
+
+namespace
+{
+/// On a graded grid, whether the projectile ended in cells wider than the fine box's: its
+/// contact gap and the cavity's wall are measured with the fine cell's point spacing.
+std::string graded_grid_warning(const mpm::Solver& solver)
+{
+  const mpm::Grid& grid = solver.background_grid();
+  if (!grid.graded() || solver.projectile() < 0)
+    return {};
+  const mpm::Particles& p = solver.points();
+  double widest = grid.cell_size();
+  for (long i = p.begin_of(solver.projectile()); i < p.end_of(solver.projectile()); ++i)
+  {
+    const mpm::Vector3 s = grid.to_cell_units(p.position[i]);
+    for (int d = 0; d < (grid.axisymmetric() ? 2 : 3); ++d)
+      widest = std::max(widest, grid.cell_width(d, int(std::floor(s[d]))));
+  }
+  if (widest <= 1.001 * grid.cell_size())
+    return {};
+  std::ostringstream o;
+  o << "the projectile ended in cells up to " << widest / grid.cell_size()
+    << " times Grid/Cell size wide, outside Grid/Grading/Fine box: its contact and the cavity "
+       "are measured with the fine cells' spacing, and its wound is not resolved there; "
+       "enlarge the fine box along the path";
+  return o.str();
+}
+} // namespace
 
 std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver)
 {
@@ -52,6 +82,8 @@ std::vector<std::string> mpm_final_warnings(const mpm::Solver& solver)
         " points left the grid and were removed: its velocity, energy and fate describe only the " +
         std::to_string(counts[1]) + " that stayed; enlarge Grid/Domain min and max along its path");
   }
+  if (const std::string graded = graded_grid_warning(solver); !graded.empty())
+    warnings.push_back(graded);
   if (solver.removed_points() > 0)
     warnings.push_back(std::to_string(solver.removed_points()) +
                        " points left the grid and were removed; their energy is booked "
@@ -76,7 +108,10 @@ void MpmStepper::log_scene(io::RunDirectory& directory) const
   std::ostringstream o;
   o << "MPM scene: " << solver.n_points_all_ranks() << " points, cell size " << scene.cell_size << " m, grid "
     << solver.background_grid().cells()[0] << " x " << solver.background_grid().cells()[1]
-    << " x " << solver.background_grid().cells()[2] << " cells, "
+    << " x " << solver.background_grid().cells()[2] << " cells";
+  if (solver.background_grid().graded())
+    o << " (graded: up to " << scene.grading.largest_cells << " times the cell outside the fine box)";
+  o << ", "
     << mpm::shape_function_name(scene.shape_function)
     << " shape functions, " << (scene.update_scheme == mpm::UpdateScheme::musl ? "MUSL" : "USL")
     << ", " << omp_get_max_threads() << " thread(s)";

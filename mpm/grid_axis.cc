@@ -1,0 +1,116 @@
+// Graded node coordinates along one grid axis and the coordinate-to-cell map.
+#include "mpm/grid_axis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vulnus::mpm
+{
+namespace
+{
+/// Cell widths marching away from the fine interval over a `length`: h min(M, 1 + d / L) at
+/// the distance d of the cell's inner face. A remainder under half a cell widens the last
+/// cell, so no cell is narrower than h and the end stays at `length` or just past it.
+std::vector<double> graded_widths(const double length, const double h, const double L,
+                                  const double M)
+{
+  std::vector<double> widths;
+  double d = 0.0;
+  while (length - d > 1e-9 * h)
+  {
+    const double w = h * std::min(M, 1.0 + d / L);
+    const double rest = length - d - w;
+    if (rest > 0.0 && rest < 0.5 * h * std::min(M, 1.0 + (d + w) / L))
+    {
+      widths.push_back(length - d);
+      break;
+    }
+    widths.push_back(w);
+    d += w;
+  }
+  return widths;
+}
+} // namespace
+
+GridAxis::GridAxis(const double lower, const double upper, const double h, double fine_lower,
+                   double fine_upper, const double growth_length, const double largest_cells,
+                   const int padding)
+  : pad(padding), bin(h), inverse_bin(1.0 / h)
+{
+  if (!(h > 0.0) || !(upper > lower) || !(growth_length > 0.0) || !(largest_cells >= 1.0))
+    throw std::invalid_argument("GridAxis: needs h > 0, upper > lower, a positive growth "
+                                "length and a largest cell of at least one cell");
+  fine_lower = std::clamp(fine_lower, lower, upper);
+  fine_upper = std::clamp(fine_upper, fine_lower, upper);
+  const int fine_cells =
+    std::max(1, int(std::ceil((fine_upper - fine_lower) / h - 1e-9)));
+  fine_upper = fine_lower + fine_cells * h;
+  const std::vector<double> below = graded_widths(fine_lower - lower, h, growth_length, largest_cells);
+  const std::vector<double> above =
+    graded_widths(std::max(0.0, upper - fine_upper), h, growth_length, largest_cells);
+
+  std::vector<double> widths(below.rbegin(), below.rend());
+  widths.insert(widths.end(), fine_cells, h);
+  widths.insert(widths.end(), above.begin(), above.end());
+  n_cells = int(widths.size());
+
+  cell_width.assign(widths.size() + 2 * pad, 0.0);
+  for (int c = 0; c < pad; ++c)
+  {
+    cell_width[c] = widths.front();
+    cell_width[cell_width.size() - 1 - c] = widths.back();
+  }
+  std::copy(widths.begin(), widths.end(), cell_width.begin() + pad);
+  inverse_cell_width.resize(cell_width.size());
+  for (std::size_t c = 0; c < cell_width.size(); ++c)
+    inverse_cell_width[c] = 1.0 / cell_width[c];
+
+  double start = fine_lower;
+  for (const double w : below)
+    start -= w;
+  for (int c = 0; c < pad; ++c)
+    start -= widths.front();
+  coordinate.resize(cell_width.size() + 1);
+  coordinate[0] = start;
+  // The fine cells' nodes are placed from the fine interval's start, not summed, so that they
+  // sit exactly on its lattice.
+  const int first_fine = pad + int(below.size());
+  for (std::size_t c = 0; c < cell_width.size(); ++c)
+  {
+    const int next = int(c) + 1;
+    coordinate[next] = next > first_fine && next <= first_fine + fine_cells
+                         ? fine_lower + (next - first_fine) * h
+                         : coordinate[c] + cell_width[c];
+  }
+
+  const int bins = int(std::ceil((coordinate.back() - coordinate.front()) * inverse_bin)) + 1;
+  cell_of_bin.resize(bins);
+  int c = 0;
+  for (int b = 0; b < bins; ++b)
+  {
+    const double x = coordinate.front() + b * bin;
+    while (c + 1 < int(cell_width.size()) && coordinate[c + 1] <= x)
+      ++c;
+    cell_of_bin[b] = c;
+  }
+}
+
+double GridAxis::to_cell_units(const double x) const
+{
+  const double u = (x - coordinate.front()) * inverse_bin;
+  const int last = int(cell_width.size()) - 1;
+  int c;
+  if (!(u >= 0.0))
+    c = 0;
+  else if (u >= double(cell_of_bin.size()))
+    c = last;
+  else
+  {
+    c = cell_of_bin[int(u)];
+    while (c < last && coordinate[c + 1] <= x)
+      ++c;
+  }
+  return (c - pad) + (x - coordinate[c]) * inverse_cell_width[c];
+}
+} // namespace vulnus::mpm
