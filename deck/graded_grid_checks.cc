@@ -42,7 +42,7 @@ void check_method(const RunParameters& p, Checker& out)
         m.parameters.model.find("hyperelastic") != std::string::npos)
       out.require(false, "Material " + m.name + "/" + model_subsection(m.parameters.model) +
                     "/Failure/Regularization length",
-                  "the nonlocal failure average is taken over cells of one size",
+                  "the nonlocal failure's neighbourhoods are not checked against wide cells",
                   "set it to 0, or Largest cell = 1");
 }
 
@@ -56,6 +56,9 @@ std::string rounded(const Eigen::Vector3d& x)
 void check_fine_box(const mpm::SceneParameters& s, Checker& out)
 {
   const mpm::GridGrading& g = s.grading;
+  if (!(g.growth_length > 0.0))
+    out.require(false, "Grid/Grading/Growth length", "must be > 0 (got 0)",
+                "give the distance over which the cells double, e.g. 0.002");
   const int axes = s.axisymmetric ? 2 : 3;
   for (int d = 0; d < axes; ++d)
     if (!(g.fine_max[d] > g.fine_min[d]))

@@ -101,9 +101,9 @@ void declare_grid_section(EntryTable& table)
                 "The widest cell of a graded grid, in cells of Cell size [-]; 1 (the default) "
                 "is a uniform grid. Cells are Cell size h inside the fine box and h min(Largest "
                 "cell, 1 + d / Growth length) at a distance d outside it, along each axis; "
-                "halving h halves every cell. Linear shape functions, MUSL, Volume averaging "
-                "none or cell, one MPI rank, a pure MPM scene and Contact/Rigid surface = exact "
-                "only (docs/graded_grid.md).");
+                "halving h halves every cell; the cells at the domain's faces are widened or "
+                "cut to end on them. Pure MPM on one MPI rank, linear shape functions, "
+                "Volume averaging none or cell, no nonlocal failure (docs/graded_grid.md).");
   table.declare("Growth length", "0.002", Patterns::Double(0.0),
                 "Distance from the fine box over which a graded grid's cells double [m]; > 0.");
   table.declare("Fine box min", "0, 0, 0", point_pattern(),

@@ -132,8 +132,8 @@ AxisLattice axis_lattice(const Grid& grid, const int axis, const double lower, c
   for (int c = first; c <= last; ++c)
   {
     const double start = std::max(lower, grid.node_coordinate(axis, c));
-    const double end = std::min(upper, grid.node_coordinate(axis, c) + grid.cell_width(axis, c));
-    if (!(end > start))
+    const double end = std::min(upper, grid.node_coordinate(axis, c + 1));
+    if (!(end - start > 1e-9 * grid.cell_size()))
       continue;
     const double spacing = (end - start) / n;
     for (unsigned int a = 0; a < n; ++a)

@@ -24,10 +24,11 @@ class GridAxis
 {
 public:
   GridAxis() = default;
-  /// Nodes from `lower` to at least `upper` (the last cell may reach past it, as a uniform
-  /// grid rounds its box up to whole cells); h-wide cells over [fine_lower, fine_upper]
-  /// (clamped to the axis), cells of h min(largest_cells, 1 + d / growth_length) outside.
-  /// `padding` cells as wide as the end cells are added beyond each end.
+  /// Nodes from `lower` to `upper` (at least a cell apart); h-wide cells over
+  /// [fine_lower, fine_upper] (clamped to the axis, and stretched to an end less than a cell
+  /// beyond), cells of h min(largest_cells, 1 + d / growth_length) outside, the last one
+  /// widened or cut to end on the axis's end, none narrower than h. `padding` cells as wide as
+  /// the end cells are added beyond each end.
   GridAxis(double lower, double upper, double h, double fine_lower, double fine_upper,
            double growth_length, double largest_cells, int padding);
 

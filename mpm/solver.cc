@@ -25,6 +25,10 @@ Solver::Solver(const SceneParameters& deck, const MPI_Comm communicator)
   const SceneParameters& scene = parameters;
   if (scene.axisymmetric && ranks.distributed())
     throw std::invalid_argument("Grid/Dimension = axisymmetric runs on one MPI rank; use threads");
+  if (grid.graded() && (scene.shape_function != ShapeFunction::linear ||
+                        scene.cell_volume_from_grid_flux || ranks.distributed()))
+    throw std::invalid_argument("a graded grid (Grid/Grading) takes linear shape functions, no "
+                                "grid flux averaging and one MPI rank");
   if (scene.axisymmetric && revolved(scene.gravity) != scene.gravity)
     throw std::invalid_argument("an axisymmetric scene's gravity must be along the axis y");
   const std::size_t n_bodies = scene.bodies.size();
@@ -107,6 +111,7 @@ Solver::Solver(const SceneParameters& deck, const MPI_Comm communicator)
   kinematics.rigid_velocity = grid_settings.rigid_velocity;
 
   stress_settings.cell_size = scene.cell_size;
+  stress_settings.graded_grid = grid.graded() ? &grid : nullptr;
   stress_settings.viscosity = {scene.artificial_viscosity_linear,
                                scene.artificial_viscosity_quadratic};
   stress_settings.body_material = materials_of_body;

@@ -5,6 +5,7 @@
 
 #include "materials/material.h"
 #include "materials/shock_viscosity.h"
+#include "mpm/grid.h"
 #include "mpm/particles.h"
 
 #include <vector>
@@ -15,6 +16,8 @@ struct StressUpdateSettings
 {
   double time_step = 0.0;
   double cell_size = 0.0;
+  /// A graded grid: the viscosity's length is then the widest side of each point's cell.
+  const Grid* graded_grid = nullptr;
   /// Bulk viscosity q = rho (linear c h |tr D| + quadratic h^2 tr(D)^2) in compression.
   materials::ShockViscosity viscosity;
   bool uses_viscosity() const { return viscosity.active(); }

@@ -26,28 +26,43 @@ ProjectileStart projectile_start(const mpm::Solver& solver)
 
 namespace
 {
-/// On a graded grid, whether the projectile ended in cells wider than the fine box's: its
-/// contact gap and the cavity's wall are measured with the fine cell's point spacing.
+/// On a graded grid, whether the wound (the failed points' places in the body as it was
+/// built) or the projectile at its end lie in cells wider than the fine box's: the contact gap, the cavity's wall and the wound are
+/// measured with the fine cell's point spacing, and the wound is not resolved there.
 std::string graded_grid_warning(const mpm::Solver& solver)
 {
   const mpm::Grid& grid = solver.background_grid();
-  if (!grid.graded() || solver.projectile() < 0)
+  if (!grid.graded())
     return {};
-  const mpm::Particles& p = solver.points();
-  double widest = grid.cell_size();
-  for (long i = p.begin_of(solver.projectile()); i < p.end_of(solver.projectile()); ++i)
+  const auto width_at = [&](const mpm::Vector3& x)
   {
-    const mpm::Vector3 s = grid.to_cell_units(p.position[i]);
+    const mpm::Vector3 s = grid.to_cell_units(x);
+    double widest = 0.0;
     for (int d = 0; d < (grid.axisymmetric() ? 2 : 3); ++d)
       widest = std::max(widest, grid.cell_width(d, int(std::floor(s[d]))));
-  }
-  if (widest <= 1.001 * grid.cell_size())
+    return widest;
+  };
+  const mpm::Particles& p = solver.points();
+  double projectile = grid.cell_size(), wound = grid.cell_size();
+  for (std::size_t b = 0; b < p.n_bodies(); ++b)
+    for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
+      if (int(b) == solver.projectile())
+        projectile = std::max(projectile, width_at(p.position[i]));
+      else if (p.failure[i] != 0) // where it failed: debris flung off the face is not the wound
+        wound = std::max(wound, width_at(p.reference_position[i].cast<double>()));
+  const double h = grid.cell_size();
+  if (projectile <= 1.001 * h && wound <= 1.001 * h)
     return {};
   std::ostringstream o;
-  o << "the projectile ended in cells up to " << widest / grid.cell_size()
-    << " times Grid/Cell size wide, outside Grid/Grading/Fine box: its contact and the cavity "
-       "are measured with the fine cells' spacing, and its wound is not resolved there; "
-       "enlarge the fine box along the path";
+  o << std::setprecision(3);
+  if (projectile > 1.001 * h)
+    o << "the projectile ended in cells up to " << projectile / h << " times Grid/Cell size wide";
+  if (wound > 1.001 * h)
+    o << (projectile > 1.001 * h ? ", and " : "") << "points failed in cells up to "
+      << wound / h << " times Grid/Cell size wide";
+  o << ", outside Grid/Grading/Fine box: contact, the cavity and the wound are measured with the "
+       "fine cells' point spacing and are not resolved there; enlarge the fine box along the "
+       "path (a projectile that perforated and flew on may be ignored)";
   return o.str();
 }
 } // namespace

@@ -36,8 +36,9 @@ GridGrading grading(const Vector3& fine_min, const Vector3& fine_max, const doub
 TEST(GradedGrid, AnAxisHasFineCellsInItsBoxAndCellsThatGrowToTheLargestOutside)
 {
   const GridAxis axis(-20e-3, 30e-3, h, -3e-3, 5e-3, 2e-3, 6.0, Grid::padding);
-  EXPECT_LE(axis.node(0), -20e-3);
-  EXPECT_GE(axis.upper(), 30e-3);
+  // The ends are the domain's faces.
+  EXPECT_EQ(axis.node(0), -20e-3);
+  EXPECT_EQ(axis.upper(), 30e-3);
   int fine = 0;
   for (int i = 0; i < axis.cells(); ++i)
   {
@@ -50,12 +51,13 @@ TEST(GradedGrid, AnAxisHasFineCellsInItsBoxAndCellsThatGrowToTheLargestOutside)
       EXPECT_NEAR(axis.width(i), h, 1e-15) << i;
       ++fine;
     }
-    // Away from the box the cells do not shrink (the last one may be widened by a remainder).
+    // Away from the box the cells do not shrink, but for the end cell, which is widened or cut
+    // to end on the face.
     if (mid > 5e-3 && i + 2 < axis.cells())
     {
       EXPECT_GE(axis.width(i + 1), axis.width(i) * (1 - 1e-12)) << i;
     }
-    if (mid < -3e-3 && i > 0)
+    if (mid < -3e-3 && i > 1)
     {
       EXPECT_GE(axis.width(i - 1), axis.width(i) * (1 - 1e-12)) << i;
     }
@@ -71,6 +73,25 @@ TEST(GradedGrid, AnAxisHasFineCellsInItsBoxAndCellsThatGrowToTheLargestOutside)
   EXPECT_GE(widest, 6.0 * h * (1 - 1e-12));
   // Far fewer cells than the 50 a uniform grid takes.
   EXPECT_LT(axis.cells(), 30);
+}
+
+TEST(GradedGrid, AFineBoxAtOrPastTheEndsStretchesItsEndCellsAndNoCellIsNarrowerThanACell)
+{
+  // The box starts half a cell above the lower end and reaches past the upper one.
+  const GridAxis axis(0.0, 10.3e-3, h, 0.5e-3, 12e-3, 2e-3, 4.0, Grid::padding);
+  EXPECT_EQ(axis.node(0), 0.0);
+  EXPECT_EQ(axis.upper(), 10.3e-3);
+  EXPECT_EQ(axis.cells(), 10);
+  for (int i = 0; i < axis.cells(); ++i)
+    EXPECT_NEAR(axis.width(i), i < 9 ? h : 1.3e-3, 1e-15) << i;
+  // Padding cells beyond the ends are as wide as the end cells.
+  EXPECT_NEAR(axis.node(-2), -2 * h, 1e-15);
+  EXPECT_NEAR(axis.node(12), 10.3e-3 + 2 * 1.3e-3, 1e-15);
+  // A box ending 0.3 cells short of the upper end leaves no sliver: its last cell is widened.
+  const GridAxis short_of_end(0.0, 10.3e-3, h, 0.0, 10e-3, 2e-3, 4.0, Grid::padding);
+  EXPECT_EQ(short_of_end.cells(), 10);
+  for (int i = 0; i < short_of_end.cells(); ++i)
+    EXPECT_GE(short_of_end.width(i), h * (1 - 1e-12)) << i;
 }
 
 TEST(GradedGrid, LinearTentsOnUnevenCellsReproduceConstantsAndPositions)
