@@ -80,7 +80,11 @@ struct FarFieldSolver::Data
   MPI_Comm comm;
   std::unique_ptr<materials::Material> material;
 
-  dealii::parallel::distributed::Triangulation<3> triangulation;
+  /// A serial triangulation on one MPI rank, a p4est one on several: p4est orders its coarse
+  /// cells hierarchically at set-up, and every cell of the graded slab mesh is a coarse cell
+  /// (minutes and gigabytes for the millions of a fine far field).
+  std::unique_ptr<dealii::Triangulation<3>> owned_triangulation;
+  dealii::Triangulation<3>& triangulation;
   dealii::FESystem<3> fe;
   dealii::DoFHandler<3> dof_handler;
   dealii::MappingQ1<3> mapping;

@@ -49,7 +49,11 @@ void throw_if_any(const bool failed, const std::string& message, const MPI_Comm 
 
 FarFieldSolver::Data::Data(const FeSceneParameters& parameters, const MPI_Comm communicator)
     : prm(parameters), comm(communicator),
-      material(materials::create_material(parameters.material)), triangulation(communicator),
+      material(materials::create_material(parameters.material)),
+      owned_triangulation(Utilities::MPI::n_mpi_processes(communicator) == 1
+                            ? std::make_unique<Triangulation<3>>()
+                            : std::make_unique<parallel::distributed::Triangulation<3>>(communicator)),
+      triangulation(*owned_triangulation),
       fe(FE_Q<3>(parameters.degree), 3), dof_handler(triangulation),
       quadrature(parameters.one_point_integration ? 1 : parameters.degree + 1),
       mass_quadrature(parameters.degree + 1), face_quadrature(parameters.degree + 1)

@@ -31,7 +31,8 @@ std::vector<double> pack_owned_cells(const FarFieldSolver::Data& d)
   v = d.velocity;
   const unsigned int rank = Utilities::MPI::this_mpi_process(d.comm);
   std::vector<double> packed;
-  packed.reserve(d.triangulation.n_locally_owned_active_cells() * values_per_cell);
+  packed.reserve(d.triangulation.n_active_cells() * values_per_cell /
+                 Utilities::MPI::n_mpi_processes(d.comm));
   for (const auto& cell : d.dof_handler.active_cell_iterators())
   {
     if (!d.owns_live(cell))
