@@ -61,6 +61,15 @@ void check_fine_box(const mpm::SceneParameters& s, Checker& out)
                 "give the distance over which the cells double, e.g. 0.002");
   const int axes = s.axisymmetric ? 2 : 3;
   for (int d = 0; d < axes; ++d)
+    if (s.domain_max[d] - s.domain_min[d] < s.cell_size)
+    {
+      out.require(false, "Grid/Domain max",
+                  "a graded grid's domain is at least one cell long along each axis (got " +
+                    rounded(s.domain_min) + " to " + rounded(s.domain_max) + ")",
+                  "enlarge the domain, or use Largest cell = 1");
+      return;
+    }
+  for (int d = 0; d < axes; ++d)
     if (!(g.fine_max[d] > g.fine_min[d]))
     {
       out.require(false, "Grid/Grading/Fine box max",
