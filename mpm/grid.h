@@ -8,7 +8,9 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -48,6 +50,20 @@ public:
   double inverse_cell_width(const int axis, const int i) const
   {
     return is_graded ? axes[axis].inverse_width(i) : inverse_h;
+  }
+  /// Widths along each axis of the cell holding the point at s (cell units).
+  Vector3 cell_widths_at(const Vector3& s) const
+  {
+    if (!is_graded)
+      return Vector3::Constant(h);
+    return Vector3(axes[0].width(int(std::floor(s[0]))), axes[1].width(int(std::floor(s[1]))),
+                   axes[2].width(int(std::floor(s[2]))));
+  }
+  /// The widest side of the cell holding x, in the r-y plane on an axisymmetric grid.
+  double widest_cell_side(const Vector3& x) const
+  {
+    const Vector3 w = cell_widths_at(to_cell_units(x));
+    return of_revolution ? std::max(w[0], w[1]) : w.maxCoeff();
   }
   /// Coordinate of node i along `axis`.
   double node_coordinate(const int axis, const int i) const

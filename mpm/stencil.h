@@ -47,20 +47,17 @@ inline std::array<std::int64_t, 8> cell_corner_keys(const Grid& grid, const std:
 namespace detail
 {
 template <class Visitor>
-inline void visit_node(const Grid& grid, const Vector3& s, const int i, const int j, const int k,
-                       const double weight, const Vector3& gradient, Visitor& visit)
+inline void visit_node(const Grid& grid, const Vector3& s, const Vector3& cell_widths, const int i,
+                       const int j, const int k, const double weight, const Vector3& gradient,
+                       Visitor& visit)
 {
   const std::int64_t key = grid.node_key(i, j, k);
   if constexpr (std::is_invocable_v<Visitor, std::int64_t, double, const Vector3&, const Vector3&>)
   {
+    // Node i is a corner of the point's cell along each axis on a graded grid (linear shape
+    // functions), so its offset is in that cell's widths.
     const Vector3 offset(i - s[0], j - s[1], k - s[2]);
-    if (!grid.graded())
-      visit(key, weight, gradient, (grid.cell_size() * offset).eval());
-    else // node i is a corner of the point's cell along each axis (linear shape functions)
-      visit(key, weight, gradient,
-            Vector3(offset[0] * grid.cell_width(0, int(std::floor(s[0]))),
-                    offset[1] * grid.cell_width(1, int(std::floor(s[1]))),
-                    offset[2] * grid.cell_width(2, int(std::floor(s[2])))));
+    visit(key, weight, gradient, cell_widths.cwiseProduct(offset).eval());
   }
   else
     visit(key, weight, gradient);
@@ -126,6 +123,7 @@ inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3&
           gradient[entry] += N * corner_gradient;
         }
   }
+  const Vector3 widths = Vector3::Constant(grid.cell_size()); // CPDI runs on uniform grids
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i)
@@ -133,7 +131,7 @@ inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3&
         const int entry = i + n[0] * (j + n[1] * k);
         if (weight[entry] == 0.0)
           continue;
-        visit_node(grid, s, lo[0] + i, lo[1] + j, lo[2] + k, weight[entry], gradient[entry],
+        visit_node(grid, s, widths, lo[0] + i, lo[1] + j, lo[2] + k, weight[entry], gradient[entry],
                    visit);
       }
 }
@@ -181,6 +179,7 @@ inline void for_each_node(const Grid& grid, const double half_size_cells, const 
     constexpr int n = nodes_per_axis(shape);
     const Vector3 s = grid.to_cell_units(x);
     const double inverse_h = grid.inverse_cell_size();
+    const Vector3 widths = grid.cell_widths_at(s);
     AxisWeights w[3];
     for (int d = 0; d < 3; ++d)
     {
@@ -215,7 +214,7 @@ inline void for_each_node(const Grid& grid, const double half_size_cells, const 
             continue;
           const Vector3 gradient(w[0].derivative[i] * wjk, w[0].value[i] * djk,
                                  w[0].value[i] * wjdk);
-          detail::visit_node(grid, s, w[0].first_node + i, w[1].first_node + j,
+          detail::visit_node(grid, s, widths, w[0].first_node + i, w[1].first_node + j,
                              w[2].first_node + k, weight, gradient, visit);
         }
       }

@@ -11,16 +11,6 @@ namespace
 {
 constexpr long block_size = 512;
 
-/// The widest side, in the grid's plane or space, of the cell holding x.
-double widest_side(const Grid& grid, const Vector3& x)
-{
-  const Vector3 u = grid.to_cell_units(x);
-  double widest = 0.0;
-  for (int d = 0; d < (grid.axisymmetric() ? 2 : 3); ++d)
-    widest = std::max(widest, grid.cell_width(d, static_cast<int>(std::floor(u[d]))));
-  return widest;
-}
-
 /// Updates points [begin, end) of one body; returns the viscous dissipation (J).
 double update_range(const StressUpdateSettings& s, const materials::Material& material,
                     const double density, const double* volumetric_rate,
@@ -51,7 +41,7 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
     double dissipated = r.dissipated_density;
     const double rate = volumetric_rate ? volumetric_rate[p] : 0.0;
     if (const double q = s.viscosity.pressure(current_density, wave_speed,
-                                              s.graded_grid ? widest_side(*s.graded_grid, particles.position[p])
+                                              s.graded_grid ? s.graded_grid->widest_cell_side(particles.position[p])
                                                             : s.cell_size,
                                               rate);
         q > 0.0)

@@ -27,29 +27,21 @@ ProjectileStart projectile_start(const mpm::Solver& solver)
 namespace
 {
 /// On a graded grid, whether the wound (the failed points' places in the body as it was
-/// built) or the projectile at its end lie in cells wider than the fine box's: the contact gap, the cavity's wall and the wound are
-/// measured with the fine cell's point spacing, and the wound is not resolved there.
+/// built) or the projectile at its end lie in cells wider than the fine box's: the contact gap,
+/// the cavity's wall and the wound are measured with the fine cell's point spacing.
 std::string graded_grid_warning(const mpm::Solver& solver)
 {
   const mpm::Grid& grid = solver.background_grid();
   if (!grid.graded())
     return {};
-  const auto width_at = [&](const mpm::Vector3& x)
-  {
-    const mpm::Vector3 s = grid.to_cell_units(x);
-    double widest = 0.0;
-    for (int d = 0; d < (grid.axisymmetric() ? 2 : 3); ++d)
-      widest = std::max(widest, grid.cell_width(d, int(std::floor(s[d]))));
-    return widest;
-  };
   const mpm::Particles& p = solver.points();
   double projectile = grid.cell_size(), wound = grid.cell_size();
   for (std::size_t b = 0; b < p.n_bodies(); ++b)
     for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
       if (int(b) == solver.projectile())
-        projectile = std::max(projectile, width_at(p.position[i]));
+        projectile = std::max(projectile, grid.widest_cell_side(p.position[i]));
       else if (p.failure[i] != 0) // where it failed: debris flung off the face is not the wound
-        wound = std::max(wound, width_at(p.reference_position[i].cast<double>()));
+        wound = std::max(wound, grid.widest_cell_side(p.reference_position[i].cast<double>()));
   const double h = grid.cell_size();
   if (projectile <= 1.001 * h && wound <= 1.001 * h)
     return {};
