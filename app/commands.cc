@@ -9,6 +9,7 @@
 #include "simulator/checkpointer.h"
 #include "simulator/scene_warnings.h"
 #include "simulator/simulation_runner.h"
+#include "simulator/zone_end_guard.h"
 #include "deck/version.h"
 
 #include <exception>
@@ -98,6 +99,8 @@ int check_command(const CommandLine& line)
   const bool has_mpm_side = parameters.method == Method::mpm;
   for (const std::string& warning : simulator::scene_warnings(parameters, has_mpm_side))
     std::cerr << "vulnus: warning: " << warning << '\n';
+  if (const std::string note = simulator::zone_end_note(parameters); !note.empty())
+    std::cout << "vulnus: note: " << note << '\n';
   std::cout << line.deck << ": deck OK\n";
   return 0;
 }

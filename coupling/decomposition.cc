@@ -2,6 +2,7 @@
 #include "coupling/decomposition.h"
 
 #include "fem/fe_scene_of_body.h"
+#include "mpm/target_path.h"
 #include "materials/material_registry.h"
 
 #include <algorithm>
@@ -54,42 +55,91 @@ const mpm::BodyParameters* flight_line(const mpm::SceneParameters& scene, mpm::V
   return nullptr;
 }
 
+/// How far the projectile's shape reaches beyond `start` along `direction`, m.
+double front_beyond(const mpm::BodyParameters& projectile, const mpm::Vector3& start,
+                    const mpm::Vector3& direction)
+{
+  return mpm::reach_along(projectile, direction) - start.dot(direction);
+}
+
+/// Where the zone ends along the flight line of the scene's projectile inside the body box.
+ZoneEnd end_along_path(const mpm::SceneParameters& scene, const mpm::Vector3& body_min,
+                       const mpm::Vector3& body_max, const std::array<double, 3>& zone_min,
+                       const std::array<double, 3>& zone_max)
+{
+  mpm::Vector3 start, direction;
+  double reach = 0.0;
+  if (flight_line(scene, start, direction, reach) == nullptr)
+    return {};
+  return zone_end_along_line(zone_min, zone_max, body_min, body_max, start, direction,
+                             1e-6 * scene.cell_size);
+}
+
 /// The projectile's axis must stay at least radius + one cell inside the zone wherever it
-/// crosses the slab (the zone may end at a slab face).
+/// crosses the slab, up to where the zone ends: at a slab face, or inside the slab in the
+/// direction of flight, where the run stops the projectile two cells short of the end
+/// (simulator/zone_end_guard.cc). That end must then lie beyond the projectile's front and the
+/// slab's face by more than those two cells.
 void check_bullet_path(const mpm::SceneParameters& scene, const mpm::BodyParameters& slab,
                        const HybridParameters& hybrid, std::vector<ParameterProblem>& problems)
 {
   mpm::Vector3 start, direction;
   double reach = 0.0;
-  if (const mpm::BodyParameters* projectile = flight_line(scene, start, direction, reach))
+  const mpm::BodyParameters* projectile = flight_line(scene, start, direction, reach);
+  if (projectile == nullptr)
+    return;
+  const ZoneEnd end = zone_end_along_line(hybrid.zone_min, hybrid.zone_max, slab.box_min,
+                                          slab.box_max, start, direction, 1e-6 * scene.cell_size);
+  if (end.ends)
   {
-    // Sample the flight line across the slab box.
-    const double span = (slab.box_max - slab.box_min).norm() + (start - slab.box_min).norm() +
-                        (start - slab.box_max).norm();
-    const int n_samples = 2000;
-    for (int i = 0; i <= n_samples; ++i)
+    const double margin = zone_end_margin_cells * scene.cell_size;
+    const double front = front_beyond(*projectile, start, direction);
+    if (end.distance <= std::max(front, end.body_entry) + margin)
     {
-      const mpm::Vector3 c = start + (span * i / n_samples) * direction;
-      bool in_slab = true;
-      for (int d = 0; d < 3; ++d)
-        in_slab = in_slab && c[d] >= slab.box_min[d] && c[d] <= slab.box_max[d];
-      if (!in_slab)
-        continue;
-      for (int d = 0; d < 3; ++d)
+      std::ostringstream s;
+      s << "the zone ends at " << axis_name(end.axis) << " = " << end.coordinate
+        << " m along the path of projectile '" << projectile->name << "', within "
+        << zone_end_margin_cells << " cells of "
+        << (front >= end.body_entry ? "the projectile's front at its start"
+                                    : "where the path enters body '" + slab.name + "'")
+        << ": the run would stop before the projectile enters the zone";
+      problems.push_back({{end.upper ? "zone_max" : "zone_min"}, s.str(),
+                          "lengthen the zone along the path, past where the projectile stops"});
+      return;
+    }
+  }
+  // Sample the flight line across the slab box, up to the zone's end.
+  const double span = (slab.box_max - slab.box_min).norm() + (start - slab.box_min).norm() +
+                      (start - slab.box_max).norm();
+  const int n_samples = 2000;
+  for (int i = 0; i <= n_samples; ++i)
+  {
+    const double along = span * i / n_samples;
+    if (end.ends && along > end.distance)
+      break;
+    const mpm::Vector3 c = start + along * direction;
+    bool in_slab = true;
+    for (int d = 0; d < 3; ++d)
+      in_slab = in_slab && c[d] >= slab.box_min[d] && c[d] <= slab.box_max[d];
+    if (!in_slab)
+      continue;
+    for (int d = 0; d < 3; ++d)
+    {
+      const bool end_face = end.ends && d == end.axis;
+      const bool lower_open =
+        hybrid.zone_min[d] <= slab.box_min[d] + 1e-9 || (end_face && !end.upper);
+      const bool upper_open =
+        hybrid.zone_max[d] >= slab.box_max[d] - 1e-9 || (end_face && end.upper);
+      if ((!lower_open && c[d] - reach < hybrid.zone_min[d]) ||
+          (!upper_open && c[d] + reach > hybrid.zone_max[d]))
       {
-        const bool lower_open = hybrid.zone_min[d] <= slab.box_min[d] + 1e-9;
-        const bool upper_open = hybrid.zone_max[d] >= slab.box_max[d] - 1e-9;
-        if ((!lower_open && c[d] - reach < hybrid.zone_min[d]) ||
-            (!upper_open && c[d] + reach > hybrid.zone_max[d]))
-        {
-          std::ostringstream s;
-          s << "the path of projectile '" << projectile->name << "' at (" << c[0] << ", " << c[1]
-            << ", " << c[2] << ") m comes closer than its radius plus one cell to the zone's "
-            << axis_name(d) << " bounds";
-          problems.push_back({{"zone_min", "zone_max"}, s.str(),
-                              "widen the zone so the tract and the tissue it tears stay in MPM"});
-          return;
-        }
+        std::ostringstream s;
+        s << "the path of projectile '" << projectile->name << "' at (" << c[0] << ", " << c[1]
+          << ", " << c[2] << ") m comes closer than its radius plus one cell to the zone's "
+          << axis_name(d) << " bounds";
+        problems.push_back({{"zone_min", "zone_max"}, s.str(),
+                            "widen the zone so the tract and the tissue it tears stay in MPM"});
+        return;
       }
     }
   }
@@ -169,6 +219,24 @@ int split_body_index(const mpm::SceneParameters& scene, const HybridParameters& 
     found = static_cast<int>(b);
   }
   return found;
+}
+
+ZoneEnd zone_end_along_path(const mpm::SceneParameters& scene, const HybridParameters& hybrid)
+{
+  const int index = split_body_index(scene, hybrid);
+  if (index < 0)
+    return {};
+  const HybridParameters resolved = resolve_zone(scene, hybrid);
+  const mpm::BodyParameters& slab = scene.bodies[static_cast<std::size_t>(index)];
+  return end_along_path(scene, slab.box_min, slab.box_max, resolved.zone_min, resolved.zone_max);
+}
+
+ZoneEnd zone_end_along_path(const HybridScene& split, const std::array<double, 3>& zone_min,
+                            const std::array<double, 3>& zone_max)
+{
+  const mpm::Vector3 body_min(split.fe.slab_min[0], split.fe.slab_min[1], split.fe.slab_min[2]);
+  const mpm::Vector3 body_max(split.fe.slab_max[0], split.fe.slab_max[1], split.fe.slab_max[2]);
+  return end_along_path(split.mpm, body_min, body_max, zone_min, zone_max);
 }
 
 std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& scene,

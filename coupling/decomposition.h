@@ -1,11 +1,12 @@
 // Splits a scene into the MPM zone (particles) and the FE far field (graded mesh with a hole),
 // and checks before any work that the split is possible: zone inside the slab, on grid nodes,
-// containing the bullet path.
+// containing the bullet path up to the slab's far face or to a zone end along it.
 #pragma once
 
 #include "core/parameter_problem.h"
 
 #include "coupling/hybrid_parameters.h"
+#include "coupling/zone_end.h"
 #include "fem/fem_parameters.h"
 #include "mpm/scene_parameters.h"
 
@@ -45,6 +46,14 @@ std::vector<ParameterProblem> check_decomposition(const mpm::SceneParameters& sc
 /// check_decomposition.
 HybridScene decompose(const mpm::SceneParameters& scene, const HybridParameters& hybrid,
                       const fem::FeSceneParameters& far_field);
+
+/// Where the deck's zone (resolved) ends along the projectile's flight line inside the split
+/// body (`ends` false without a projectile or a body to split).
+ZoneEnd zone_end_along_path(const mpm::SceneParameters& scene, const HybridParameters& hybrid);
+/// The same for the zone [zone_min, zone_max] of a split scene (the zone now, which an adaptive
+/// zone grows).
+ZoneEnd zone_end_along_path(const HybridScene& split, const std::array<double, 3>& zone_min,
+                            const std::array<double, 3>& zone_max);
 
 /// Index of the body the hybrid splits (hybrid.body or the default choice), or -1.
 int split_body_index(const mpm::SceneParameters& scene, const HybridParameters& hybrid);

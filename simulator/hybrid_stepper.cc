@@ -66,7 +66,8 @@ HybridStepper::HybridStepper(const deck::RunParameters& parameters, const MPI_Co
       projectile(projectile_start(solver.mpm())),
       initial_energy(hybrid_scene_energy(solver, solver.mpm().diagnostics(),
                                          solver.fe().diagnostics())),
-      initial_momentum(solver.total_momentum())
+      initial_momentum(solver.total_momentum()),
+      zone_end_guard(solver)
 {
 }
 
@@ -121,6 +122,8 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
       << solver.n_interface_nodes_across_ranks()
       << " interface nodes have their FE owner and MPM slab on different ranks)";
   directory.log(o.str());
+  if (const std::string note = zone_end_note(split); !note.empty())
+    directory.log("note: " + note);
   if (const std::string hold = rigid_hold_scene_line(solver.mpm()); !hold.empty())
     directory.log(hold);
 }
@@ -150,6 +153,7 @@ std::string HybridStepper::energy_error_causes() const
 
 std::vector<std::string> HybridStepper::check_validity(const bool final_check)
 {
+  zone_end_guard.check(solver);
   return monitors.check(solver, initial_energy, final_check);
 }
 

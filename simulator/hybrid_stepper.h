@@ -7,6 +7,7 @@
 #include "simulator/hybrid_monitors.h"
 #include "simulator/mpm_stepper.h"
 #include "simulator/stepper.h"
+#include "simulator/zone_end_guard.h"
 
 namespace vulnus::simulator
 {
@@ -69,5 +70,6 @@ private:
   double initial_energy; ///< J, of the whole scene at t = 0
   Eigen::Vector3d initial_momentum; ///< kg m/s, of the whole scene at t = 0
   HybridMonitors monitors;
+  ZoneEndGuard zone_end_guard;
 };
 } // namespace vulnus::simulator

@@ -1,4 +1,5 @@
-// The MPM/FE split: what goes where, and the checks that refuse an impossible split.
+// The MPM/FE split: what goes where, the checks that refuse an impossible split, and where a
+// zone ends along the bullet's path.
 #include "coupling/hybrid_solver.h"
 #include "hybrid_test_scenes.h"
 
@@ -148,6 +149,65 @@ TEST(Decomposition, RefusesAZoneThatMissesTheBulletPath)
     all_problems(s, zone({-0.005, 0.0, -0.006}, {0.006, 0.01, 0.006}, CouplingScheme::same_step));
   EXPECT_NE(text.find("path of projectile 'bullet'"), std::string::npos) << text;
   EXPECT_NE(text.find("zone's x bounds"), std::string::npos) << text;
+}
+
+// A zone may end along the path inside the slab, in the direction of flight: the paper's bullet
+// (a 15 mm cylinder along +y, its front at y = -1 mm at the start) into the 10 mm slab, the
+// zone to y = 6 mm. Its end is reported; the zone must still hold the path sideways and from
+// the slab's face, and end more than two cells beyond that face and the bullet's front.
+TEST(Decomposition, AZoneMayEndAlongThePathInTheDirectionOfFlight)
+{
+  const mpm::SceneParameters s = slab_and_bullet(0.02);
+  const auto box = [](const double y_min, const double x_min, const double y_max) {
+    return zone({x_min, y_min, -0.006}, {0.006, y_max, 0.006}, CouplingScheme::same_step);
+  };
+  EXPECT_EQ(all_problems(s, box(0.0, -0.006, 0.006)), "");
+  const ZoneEnd end = zone_end_along_path(s, box(0.0, -0.006, 0.006));
+  ASSERT_TRUE(end.ends);
+  EXPECT_EQ(end.axis, 1);
+  EXPECT_TRUE(end.upper);
+  EXPECT_NEAR(end.coordinate, 0.006, 1e-15);
+  EXPECT_NEAR(end.distance, 0.022, 1e-12); // from the bullet's tail at y = -16 mm
+  EXPECT_NEAR(end.body_entry, 0.016, 1e-12);
+  EXPECT_TRUE(end.passed_by({0.0, 0.0061, 0.0}));
+  EXPECT_FALSE(end.passed_by({0.0, 0.0059, 0.0}));
+  EXPECT_FALSE(zone_end_along_path(s, box(0.0, -0.006, 0.01)).ends); // to the far face
+
+  // Within two cells of the slab's face: the run would stop at once.
+  const auto early = check_decomposition(s, box(0.0, -0.006, 0.001), uniform_far_field(1e-3));
+  ASSERT_EQ(early.size(), 1u);
+  EXPECT_EQ(early[0].parameters, std::vector<std::string>{"zone_max"});
+  EXPECT_NE(early[0].problem.find("the zone ends at y = 0.001 m along the path of projectile "
+                                  "'bullet', within 2 cells of where the path enters body "
+                                  "'block'"),
+            std::string::npos)
+    << early[0].problem;
+  // Too close sideways, or starting behind the slab's face: refused as before.
+  EXPECT_NE(all_problems(s, box(0.0, -0.005, 0.006)).find("zone's x bounds"), std::string::npos);
+  EXPECT_NE(all_problems(s, box(0.002, -0.006, 0.006)).find("zone's y bounds"),
+            std::string::npos);
+
+  // A projectile that starts inside the slab, beyond the zone's end: refused.
+  mpm::SceneParameters inside = s;
+  inside.bodies[1].shape = mpm::BodyShape::sphere;
+  inside.bodies[1].radius = 0.002;
+  inside.bodies[1].center = {0.0, 0.005, 0.0};
+  const std::string behind = all_problems(inside, box(0.0, -0.006, 0.004));
+  EXPECT_NE(behind.find("within 2 cells of the projectile's front at its start"),
+            std::string::npos)
+    << behind;
+
+  // A split scene's zone as an adaptive zone grows it: the end moves, and goes at the far face.
+  HybridParameters adaptive = box(0.0, -0.006, 0.006);
+  adaptive.adaptive.enabled = true;
+  const HybridScene split = decompose(s, adaptive, uniform_far_field(1e-3));
+  EXPECT_NEAR(zone_end_along_path(split, split.hybrid.zone_min, split.hybrid.zone_max).coordinate,
+              0.006, 1e-15);
+  std::array<double, 3> grown = split.hybrid.zone_max;
+  grown[1] = 0.008;
+  EXPECT_NEAR(zone_end_along_path(split, split.hybrid.zone_min, grown).coordinate, 0.008, 1e-15);
+  grown[1] = 0.01;
+  EXPECT_FALSE(zone_end_along_path(split, split.hybrid.zone_min, grown).ends);
 }
 } // namespace
 } // namespace vulnus::coupling

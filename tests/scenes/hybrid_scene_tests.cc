@@ -1,6 +1,7 @@
 // The hybrid paper deck against its pure-MPM reference, through `vulnus run`: the coarse
 // anisotropic 150 m/s scene with a rigid bullet (the elastic-plastic bullet gives the same
-// comparison at ten times the cost), and a pure-FE deck.
+// comparison at ten times the cost), a cut of the FBI block whose zone ends along the path, and
+// a pure-FE deck.
 #include "../app/command_runner.h"
 
 #include <nlohmann/json.hpp>
@@ -186,6 +187,45 @@ TEST(HybridPaperScene, AZoneOffTheGridIsRefusedBeforeAnyWork)
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_NE(r.err.find("x = -0.0125 m is not on a grid node"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(scratch.path / "out"));
+}
+
+// The FBI block's deck cut to a 16 x 20 x 16 mm block (4,460 points, 1,360 far-field cells)
+// with its zone ending 8 mm deep along the BB's path: `vulnus check` accepts it and notes the
+// end, and the run stops as a failure (exit status 1) at the first step where the BB's front
+// comes within two cells of that end, 6 mm deep, saying where and what to lengthen.
+TEST(HybridFbiBlock, AZoneEndingAlongThePathStopsTheRunBeforeTheBbReachesItsEnd)
+{
+  ScratchDirectory scratch("hybrid_zone_end");
+  const std::string deck = "'" + source_dir() + "/inputs/validation/fbi_block_hybrid.prm'";
+  const std::string cut =
+    " --set 'Body block/Box min=-0.008, 0, -0.008' --set 'Body block/Box max=0.008, 0.02, 0.008'"
+    " --set 'Grid/Domain min=-0.008, -0.006, -0.008'"
+    " --set 'Grid/Domain max=0.008, 0.026, 0.008' --set 'Hybrid/Zone max=0.004, 0.008, 0.004'"
+    " --set 'Hybrid/Adaptive zone=false' --set 'Output/Particle output interval=0'"
+    " --set 'Time/End time=1e-4'";
+  const std::string note = "the MPM zone ends at y = 0.008 m along the path of projectile 'bb', "
+                           "inside body 'block' (its face at y = 0.02 m)";
+  const CommandResult check = run_vulnus("check " + deck + cut, scratch.path);
+  EXPECT_EQ(check.exit_status, 0) << check.out << check.err;
+  EXPECT_NE(check.out.find("vulnus: note: " + note), std::string::npos) << check.out;
+
+  const CommandResult run =
+    run_vulnus("run " + deck + " --output run --threads 1" + cut, scratch.path);
+  EXPECT_EQ(run.exit_status, 1) << run.out << run.err;
+  EXPECT_NE(read_text(scratch.path / "run" / "log.txt").find("note: " + note), std::string::npos);
+  const nlohmann::json s = nlohmann::json::parse(read_text(scratch.path / "run" / "summary.json"));
+  EXPECT_FALSE(s["completed"].get<bool>());
+  const std::string error = s["error"].get<std::string>();
+  EXPECT_NE(error.find("came within 2 cells (0.002 m) of the MPM zone's end at y = 0.008 m"),
+            std::string::npos)
+    << error;
+  EXPECT_NE(error.find("likely remedy: lengthen Hybrid/Zone max along the path"),
+            std::string::npos)
+    << error;
+  // The BB's front (mass centre + 2.2 mm) at the stop: 6 mm deep, within one step's travel.
+  const double front = s["bullet"]["position_m"][1].get<double>() + 0.0022;
+  EXPECT_NEAR(front, 0.006, 1e-4);
+  EXPECT_FALSE(s["bullet"]["exited"].get<bool>());
 }
 } // namespace
 
