@@ -26,6 +26,7 @@ ZoneEnd zone_end_along_line(const std::array<double, 3>& zone_min,
   end.ends =
       std::abs(end.coordinate - body_face) > tolerance && zone.t_out < body.t_out - tolerance;
   end.distance = zone.t_out;
+  end.along = origin.dot(direction) + zone.t_out;
   end.body_entry = body.t_in;
   return end;
 }

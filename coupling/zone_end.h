@@ -26,6 +26,8 @@ struct ZoneEnd
   /// origin), and where it enters the body.
   double distance = 0.0;
   double body_entry = 0.0;
+  /// x . direction of the end's point on the line, m.
+  double along = 0.0;
 
   /// Whether x lies beyond the end's face, outside the zone.
   bool passed_by(const mpm::Vector3& x) const

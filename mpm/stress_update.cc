@@ -40,10 +40,13 @@ double update_range(const StressUpdateSettings& s, const materials::Material& ma
     Tensor2 sigma = r.cauchy_stress;
     double dissipated = r.dissipated_density;
     const double rate = volumetric_rate ? volumetric_rate[p] : 0.0;
-    if (const double q = s.viscosity.pressure(current_density, wave_speed,
-                                              s.graded_grid ? s.graded_grid->widest_cell_side(particles.position[p])
-                                                            : s.cell_size,
-                                              rate);
+    // The viscosity acts in compression only, so a graded grid's cell is looked up only then.
+    const bool compressing = rate < 0.0 && s.viscosity.active();
+    const double length = !compressing ? 0.0
+                          : s.graded_grid ? s.graded_grid->widest_cell_side(particles.position[p])
+                                          : s.cell_size;
+    if (const double q = compressing ? s.viscosity.pressure(current_density, wave_speed, length, rate)
+                                     : 0.0;
         q > 0.0)
     {
       sigma.diagonal().array() -= q;

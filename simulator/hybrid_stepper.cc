@@ -66,8 +66,7 @@ HybridStepper::HybridStepper(const deck::RunParameters& parameters, const MPI_Co
       projectile(projectile_start(solver.mpm())),
       initial_energy(hybrid_scene_energy(solver, solver.mpm().diagnostics(),
                                          solver.fe().diagnostics())),
-      initial_momentum(solver.total_momentum()),
-      zone_end_guard(solver)
+      initial_momentum(solver.total_momentum())
 {
 }
 
@@ -153,7 +152,7 @@ std::string HybridStepper::energy_error_causes() const
 
 std::vector<std::string> HybridStepper::check_validity(const bool final_check)
 {
-  zone_end_guard.check(solver);
+  check_zone_end(solver);
   return monitors.check(solver, initial_energy, final_check);
 }
 

@@ -70,6 +70,5 @@ private:
   double initial_energy; ///< J, of the whole scene at t = 0
   Eigen::Vector3d initial_momentum; ///< kg m/s, of the whole scene at t = 0
   HybridMonitors monitors;
-  ZoneEndGuard zone_end_guard;
 };
 } // namespace vulnus::simulator

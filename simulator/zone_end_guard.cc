@@ -3,7 +3,6 @@
 
 #include "core/run_failure.h"
 #include "coupling/decomposition.h"
-#include "mpm/target_path.h"
 
 #include <sstream>
 
@@ -27,29 +26,6 @@ double body_face(const coupling::HybridScene& split, const coupling::ZoneEnd& en
   return end.upper ? split.fe.slab_max[end.axis] : split.fe.slab_min[end.axis];
 }
 
-/// Mass, mass centre and mean velocity of body b over all ranks. Collective.
-double mass_centre(const mpm::Solver& solver, const std::size_t b, mpm::Vector3& centre,
-                   mpm::Vector3& velocity)
-{
-  const mpm::Particles& p = solver.points();
-  double sums[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  for (std::size_t i = p.begin_of(b); i < p.end_of(b); ++i)
-  {
-    sums[0] += p.mass[i];
-    for (int d = 0; d < 3; ++d)
-    {
-      sums[1 + d] += p.mass[i] * p.position[i][d];
-      sums[4 + d] += p.mass[i] * p.velocity[i][d];
-    }
-  }
-  solver.rank_group().sum(sums, 7);
-  if (sums[0] > 0.0)
-  {
-    centre = mpm::Vector3(sums[1], sums[2], sums[3]) / sums[0];
-    velocity = mpm::Vector3(sums[4], sums[5], sums[6]) / sums[0];
-  }
-  return sums[0];
-}
 } // namespace
 
 std::string zone_end_note(const coupling::HybridScene& split)
@@ -90,20 +66,7 @@ std::string zone_end_note(const deck::RunParameters& parameters)
       coupling::decompose(parameters.scene, parameters.hybrid, parameters.far_field));
 }
 
-ZoneEndGuard::ZoneEndGuard(const coupling::HybridSolver& solver)
-{
-  const mpm::Solver& mpm_side = solver.mpm();
-  const int b = mpm_side.projectile();
-  if (b < 0)
-    return;
-  mpm::Vector3 centre = mpm::Vector3::Zero(), velocity = mpm::Vector3::Zero();
-  const mpm::Vector3& flight = mpm_side.flight_direction();
-  if (mass_centre(mpm_side, static_cast<std::size_t>(b), centre, velocity) > 0.0)
-    front = mpm::reach_along(mpm_side.scene().bodies[static_cast<std::size_t>(b)], flight) -
-            centre.dot(flight);
-}
-
-void ZoneEndGuard::check(const coupling::HybridSolver& solver) const
+void check_zone_end(const coupling::HybridSolver& solver)
 {
   const mpm::Solver& mpm_side = solver.mpm();
   const int b = mpm_side.projectile();
@@ -114,20 +77,16 @@ void ZoneEndGuard::check(const coupling::HybridSolver& solver) const
       coupling::zone_end_along_path(split, solver.zone_min(), solver.zone_max());
   if (!end.ends) // the same on every rank: the zone is
     return;
-  mpm::Vector3 centre = mpm::Vector3::Zero(), velocity = mpm::Vector3::Zero();
-  if (!(mass_centre(mpm_side, static_cast<std::size_t>(b), centre, velocity) > 0.0))
-    return;
-  const mpm::Vector3 heading =
-      velocity.norm() > 0.0 ? mpm::Vector3(velocity.normalized()) : mpm_side.flight_direction();
+  // The nose along the flight, as x . flight (the same on every rank: the record is reduced).
+  const double nose =
+      mpm_side.penetration().latest().depth + mpm_side.target_extent_along_flight().first;
   const double margin = coupling::zone_end_margin_cells * split.mpm.cell_size;
-  const mpm::Vector3 tip = centre + front * heading;
-  if (!end.passed_by(tip + margin * heading))
+  if (nose + margin <= end.along)
     return;
   const char* const axis = axis_name(end.axis);
   std::ostringstream problem, cause, remedy;
   problem << "projectile '" << split.mpm.bodies[static_cast<std::size_t>(b)].name
-          << "', its mass centre at (" << centre[0] << ", " << centre[1] << ", " << centre[2]
-          << ") m and its front at " << axis << " = " << tip[end.axis] << " m, came within "
+          << "', its front at " << nose << " m along its flight, came within "
           << coupling::zone_end_margin_cells << " cells (" << margin
           << " m) of the MPM zone's end at " << axis << " = " << end.coordinate
           << " m along its path";

@@ -17,19 +17,8 @@ std::string zone_end_note(const coupling::HybridScene& split);
 /// The same for a deck ("" unless it is a hybrid one). Call after the deck's checks passed.
 std::string zone_end_note(const deck::RunParameters& parameters);
 
-class ZoneEndGuard
-{
-public:
-  /// Collective: how far the projectile's shape reaches beyond its mass centre along its
-  /// flight, at the start.
-  explicit ZoneEndGuard(const coupling::HybridSolver& solver);
-
-  /// Collective, after every step: throws BlowUp when the projectile's front (its mass centre
-  /// plus that reach along its velocity) plus two cells lies past the end of the zone as it
-  /// stands now (an adaptive zone moves its end as it grows).
-  void check(const coupling::HybridSolver& solver) const;
-
-private:
-  double front = 0.0; ///< m
-};
+/// Collective, after every step: throws BlowUp when the projectile's nose (as the MPM solver
+/// records it for the penetration) plus two cells lies past the end of the zone as it stands now
+/// (an adaptive zone moves its end as it grows).
+void check_zone_end(const coupling::HybridSolver& solver);
 } // namespace vulnus::simulator
