@@ -51,18 +51,11 @@ public:
   {
     return is_graded ? axes[axis].inverse_width(i) : inverse_h;
   }
-  /// Widths along each axis of the cell holding the point at s (cell units).
-  Vector3 cell_widths_at(const Vector3& s) const
-  {
-    if (!is_graded)
-      return Vector3::Constant(h);
-    return Vector3(axes[0].width(int(std::floor(s[0]))), axes[1].width(int(std::floor(s[1]))),
-                   axes[2].width(int(std::floor(s[2]))));
-  }
   /// The widest side of the cell holding x, in the r-y plane on an axisymmetric grid.
   double widest_cell_side(const Vector3& x) const
   {
-    const Vector3 w = cell_widths_at(to_cell_units(x));
+    Vector3 w, inverse_w;
+    locate(x, w, inverse_w);
     return of_revolution ? std::max(w[0], w[1]) : w.maxCoeff();
   }
   /// Coordinate of node i along `axis`.
@@ -82,6 +75,22 @@ public:
       return (x - domain_min) * inverse_h;
     return Vector3(axes[0].to_cell_units(x[0]), axes[1].to_cell_units(x[1]),
                    axes[2].to_cell_units(x[2]));
+  }
+
+  /// to_cell_units(x), with the widths of the cell holding x along each axis and their
+  /// inverses: one lookup per axis for what a point's stencil needs.
+  Vector3 locate(const Vector3& x, Vector3& widths, Vector3& inverse_widths) const
+  {
+    if (!is_graded)
+    {
+      widths.setConstant(h);
+      inverse_widths.setConstant(inverse_h);
+      return (x - domain_min) * inverse_h;
+    }
+    Vector3 s;
+    for (int d = 0; d < 3; ++d)
+      s[d] = axes[d].locate(x[d], widths[d], inverse_widths[d]);
+    return s;
   }
 
   /// True when node (i, j, k) lies inside the padded node box.

@@ -98,6 +98,10 @@ GridAxis::GridAxis(const double lower, const double upper, const double h, doubl
                                                                              : coordinate[c] + cell_width[c];
   }
 
+  this->fine_first = first_fine;
+  fine_start = coordinate[first_fine];
+  fine_uniform_cells = fine_cells - 1;
+
   const int bins = int(std::ceil((coordinate.back() - coordinate.front()) * inverse_bin)) + 1;
   cell_of_bin.resize(bins);
   int c = 0;
@@ -108,23 +112,5 @@ GridAxis::GridAxis(const double lower, const double upper, const double h, doubl
       ++c;
     cell_of_bin[b] = c;
   }
-}
-
-double GridAxis::to_cell_units(const double x) const
-{
-  const double u = (x - coordinate.front()) * inverse_bin;
-  const int last = int(cell_width.size()) - 1;
-  int c;
-  if (!(u >= 0.0))
-    c = 0;
-  else if (u >= double(cell_of_bin.size()))
-    c = last;
-  else
-  {
-    c = cell_of_bin[int(u)];
-    while (c < last && coordinate[c + 1] <= x)
-      ++c;
-  }
-  return (c - pad) + (x - coordinate[c]) * inverse_cell_width[c];
 }
 } // namespace vulnus::mpm

@@ -43,7 +43,32 @@ public:
 
   /// i + (x - node(i)) / width(i) for the cell i holding x; beyond the padded ends, the end
   /// cell's map continued.
-  double to_cell_units(double x) const;
+  double to_cell_units(const double x) const
+  {
+    double width, inverse_width;
+    return locate(x, width, inverse_width);
+  }
+  /// to_cell_units(x), with the width of the cell holding x and its inverse.
+  double locate(const double x, double& width, double& inverse_width) const
+  {
+    // The fine cells are h wide from a node placed exactly, so x's cell there is found by
+    // division; the nearest node decides where rounding leaves it within a cell of the truth.
+    const double u = (x - fine_start) * inverse_bin;
+    int c;
+    if (u >= 0.0 && u < fine_uniform_cells)
+    {
+      c = fine_first + int(u);
+      if (coordinate[c] > x)
+        --c;
+      else if (coordinate[c + 1] <= x)
+        ++c;
+    }
+    else
+      c = cell_holding(x);
+    width = cell_width[c];
+    inverse_width = inverse_cell_width[c];
+    return (c - pad) + (x - coordinate[c]) * inverse_width;
+  }
 
 private:
   int clamp_cell(const int i) const
@@ -52,8 +77,28 @@ private:
     return storage < 0 ? 0 : storage >= int(cell_width.size()) ? int(cell_width.size()) - 1 : storage;
   }
 
+  /// Storage index of the cell holding x (the cell table's lookup, for any x).
+  int cell_holding(const double x) const
+  {
+    const double u = (x - coordinate.front()) * inverse_bin;
+    const int last = int(cell_width.size()) - 1;
+    if (!(u >= 0.0))
+      return 0;
+    if (u >= double(cell_of_bin.size()))
+      return last;
+    int c = cell_of_bin[int(u)];
+    while (c > 0 && coordinate[c] > x) // a bin's start rounded past x
+      --c;
+    while (c < last && coordinate[c + 1] <= x)
+      ++c;
+    return c;
+  }
+
   int n_cells = 0;
   int pad = 0;
+  int fine_first = 0;          // storage index of the first fine cell
+  double fine_start = 0.0;     // its lower node
+  double fine_uniform_cells = 0.0; // fine cells exactly h wide from fine_start
   double bin = 1.0;         // the finest width: no cell is narrower, so a bin meets two cells at most
   double inverse_bin = 1.0;
   std::vector<double> coordinate;        // nodes -pad .. n_cells + pad

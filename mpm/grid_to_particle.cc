@@ -216,7 +216,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    Tensor2 L = Tensor2::Zero();
                    Vector3 v = Vector3::Zero();
                    double radial_velocity = 0.0;
-                   for_each_node<shape>(
+                   const Vector3 start_in_cells = for_each_node<shape>(
                        grid, lp, particles.position[p], F,
                        [&](const std::int64_t key, const double w, const Vector3& grad_w)
                        {
@@ -241,7 +241,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                    if (averaging)
                    {
                      averaging->j_old[p] = J_old;
-                     averaging->cell[p] = debris ? -1 : VolumeAveraging::cell_key(grid, x_start);
+                     averaging->cell[p] = debris ? -1 : VolumeAveraging::cell_key_at(grid, start_in_cells);
                    }
                    if (!debris && midpoint)
                    {

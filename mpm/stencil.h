@@ -71,7 +71,7 @@ inline void visit_node(const Grid& grid, const Vector3& s, const Vector3& cell_w
 /// 4 x 4 x 4 within the reach) before any node is visited, so a node shared by several
 /// corners is scattered to once.
 template <class Visitor>
-inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3& x,
+inline Vector3 for_each_cpdi_node(const Grid& grid, const double lp, const Vector3& x,
                                const Eigen::Matrix3d& F, Visitor& visit)
 {
   constexpr int most = 4;
@@ -134,6 +134,7 @@ inline void for_each_cpdi_node(const Grid& grid, const double lp, const Vector3&
         visit_node(grid, s, widths, lo[0] + i, lo[1] + j, lo[2] + k, weight[entry], gradient[entry],
                    visit);
       }
+  return s;
 }
 } // namespace detail
 
@@ -165,29 +166,26 @@ inline void for_each_stencil_block(const Grid& grid, const ShapeFunction shape, 
   }
 }
 
+/// Visits the nodes of the point at x; returns x in cell units (Grid::to_cell_units).
 template <ShapeFunction shape, class Visitor>
-inline void for_each_node(const Grid& grid, const double half_size_cells, const Vector3& x,
-                          const Eigen::Matrix3d& F, Visitor&& visit)
+inline Vector3 for_each_node(const Grid& grid, const double half_size_cells, const Vector3& x,
+                             const Eigen::Matrix3d& F, Visitor&& visit)
 {
   if constexpr (shape == ShapeFunction::cpdi)
   {
-    detail::for_each_cpdi_node(grid, half_size_cells, x, F, visit);
-    return;
+    return detail::for_each_cpdi_node(grid, half_size_cells, x, F, visit);
   }
   else
   {
     constexpr int n = nodes_per_axis(shape);
-    const Vector3 s = grid.to_cell_units(x);
     const double inverse_h = grid.inverse_cell_size();
-    const Vector3 widths = grid.cell_widths_at(s);
+    Vector3 widths, inverse_widths;
+    const Vector3 s = grid.locate(x, widths, inverse_widths);
     AxisWeights w[3];
     for (int d = 0; d < 3; ++d)
     {
       if constexpr (shape == ShapeFunction::linear)
-        linear_axis_weights(s[d],
-                            grid.graded() ? grid.inverse_cell_width(d, int(std::floor(s[d])))
-                                          : inverse_h,
-                            w[d]);
+        linear_axis_weights(s[d], inverse_widths[d], w[d]);
       else
         gimp_axis_weights(s[d], half_size_cells, inverse_h, w[d]);
     }
@@ -218,6 +216,7 @@ inline void for_each_node(const Grid& grid, const double half_size_cells, const 
                              w[2].first_node + k, weight, gradient, visit);
         }
       }
+    return s;
   }
 }
 

@@ -24,7 +24,11 @@ void VolumeAveraging::prepare(const Grid& grid, const std::size_t n_points)
 
 std::int64_t VolumeAveraging::cell_key(const Grid& grid, const Vector3& x)
 {
-  const Vector3 u = grid.to_cell_units(x);
+  return cell_key_at(grid, grid.to_cell_units(x));
+}
+
+std::int64_t VolumeAveraging::cell_key_at(const Grid& grid, const Vector3& u)
+{
   const int i = static_cast<int>(std::floor(u[0]));
   const int j = static_cast<int>(std::floor(u[1]));
   const int k = static_cast<int>(std::floor(u[2]));

@@ -51,6 +51,8 @@ struct VolumeAveraging
   void clear_pair(std::size_t n_points);
   /// Key of the cell holding x (its lowest node's key), or -1 outside the node box.
   static std::int64_t cell_key(const Grid& grid, const Vector3& x);
+  /// The same for a point at s in cell units.
+  static std::int64_t cell_key_at(const Grid& grid, const Vector3& s);
 };
 
 /// Replaces the volume change of points [begin, end) (one body, F already updated, j_old and

@@ -94,6 +94,35 @@ TEST(GradedGrid, AFineBoxAtOrPastTheEndsStretchesItsEndCellsAndNoCellIsNarrowerT
     EXPECT_GE(short_of_end.width(i), h * (1 - 1e-12)) << i;
 }
 
+TEST(GradedGrid, EveryCoordinateIsLocatedInTheCellWhoseNodesBracketIt)
+{
+  // Fine cells (found by division) and graded ones (found by the table) alike, at random
+  // coordinates, on every node and a rounding's width either side of it, and in the padding.
+  const GridAxis axis(-20e-3, 30e-3, h, -3.3e-3, 5.2e-3, 0.5e-3, 8.0, Grid::padding);
+  std::vector<double> xs;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> anywhere(axis.node(-Grid::padding),
+                                                  axis.node(axis.cells() + Grid::padding));
+  for (int n = 0; n < 20000; ++n)
+    xs.push_back(anywhere(random));
+  for (int i = -Grid::padding; i <= axis.cells() + Grid::padding; ++i)
+    for (const double x : {axis.node(i), std::nextafter(axis.node(i), -1.0),
+                           std::nextafter(axis.node(i), 1.0)})
+      xs.push_back(x);
+  for (const double x : xs)
+  {
+    int holding = -Grid::padding;
+    while (holding + 1 < axis.cells() + Grid::padding && axis.node(holding + 1) <= x)
+      ++holding;
+    double width = 0.0, inverse_width = 0.0;
+    const double s = axis.locate(x, width, inverse_width);
+    EXPECT_EQ(width, axis.width(holding)) << x;
+    EXPECT_EQ(inverse_width, axis.inverse_width(holding)) << x;
+    EXPECT_EQ(s, holding + (x - axis.node(holding)) * axis.inverse_width(holding)) << x;
+    EXPECT_EQ(axis.to_cell_units(x), s) << x;
+  }
+}
+
 TEST(GradedGrid, LinearTentsOnUnevenCellsReproduceConstantsAndPositions)
 {
   const Grid grid(Vector3(-10e-3, -10e-3, -10e-3), Vector3(12e-3, 12e-3, 12e-3), h, false,
