@@ -15,8 +15,6 @@ namespace vulnus::coupling
 {
 namespace
 {
-const char* axis_name(const int d) { return d == 0 ? "x" : (d == 1 ? "y" : "z"); }
-
 std::string format_point(const std::array<double, 3>& x)
 {
   std::ostringstream s;

@@ -10,6 +10,9 @@
 
 namespace vulnus::coupling
 {
+/// "x", "y" or "z" for axis d, as the messages about a zone's bounds name it.
+inline const char* axis_name(const int d) { return d == 0 ? "x" : (d == 1 ? "y" : "z"); }
+
 /// Tissue the zone keeps ahead of the projectile's front, in grid cells: one for the grid
 /// support of the front's points (the contact acts on the nodes of their cells), one for the
 /// tissue the front compresses and tears ahead of it, which must still be material points.

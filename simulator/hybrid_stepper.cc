@@ -8,6 +8,7 @@
 #include "simulator/hybrid_history.h"
 #include "simulator/rigid_hold_report.h"
 #include "simulator/support_resolution.h"
+#include "simulator/zone_end_guard.h"
 
 #include <omp.h>
 

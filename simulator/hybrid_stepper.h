@@ -7,7 +7,6 @@
 #include "simulator/hybrid_monitors.h"
 #include "simulator/mpm_stepper.h"
 #include "simulator/stepper.h"
-#include "simulator/zone_end_guard.h"
 
 namespace vulnus::simulator
 {

@@ -10,11 +10,6 @@ namespace vulnus::simulator
 {
 namespace
 {
-const char* axis_name(const int d)
-{
-  return d == 0 ? "x" : (d == 1 ? "y" : "z");
-}
-
 const char* zone_entry(const coupling::ZoneEnd& end)
 {
   return end.upper ? "Hybrid/Zone max" : "Hybrid/Zone min";
@@ -39,7 +34,7 @@ std::string zone_end_note(const coupling::HybridScene& split)
     if (body.is_projectile)
       projectile = body.name;
   const double margin = coupling::zone_end_margin_cells * split.mpm.cell_size;
-  const char* const axis = axis_name(end.axis);
+  const char* const axis = coupling::axis_name(end.axis);
   std::ostringstream o;
   o << "the MPM zone ends at " << axis << " = " << end.coordinate
     << " m along the path of projectile '" << projectile << "', inside body '"
@@ -83,7 +78,7 @@ void check_zone_end(const coupling::HybridSolver& solver)
   const double margin = coupling::zone_end_margin_cells * split.mpm.cell_size;
   if (nose + margin <= end.along)
     return;
-  const char* const axis = axis_name(end.axis);
+  const char* const axis = coupling::axis_name(end.axis);
   std::ostringstream problem, cause, remedy;
   problem << "projectile '" << split.mpm.bodies[static_cast<std::size_t>(b)].name
           << "', its front at " << nose << " m along its flight, came within "
