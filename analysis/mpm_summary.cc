@@ -30,10 +30,6 @@ std::string projectile_fate(const mpm::ProjectileExit& exit, const bool through_
 
 namespace
 {
-const char* face_condition_name(const mpm::FaceCondition c)
-{
-  return c == mpm::FaceCondition::fixed ? "fixed" : c == mpm::FaceCondition::roller ? "roller" : "free";
-}
 
 /// summary.json's condition of a domain face: "fixed (no body reached it)" for a support that
 /// gave no impulse and that no deformable body came within a cell of at the start
@@ -45,7 +41,7 @@ std::string support_condition(const mpm::Solver& solver, const int face,
   const mpm::SceneParameters& scene = solver.scene();
   if (scene.axisymmetric && face != 1 && face != 2 && face != 3) // mpm/axisymmetry.h
     return face == 0 ? "axis (v_r = 0)" : "hoop direction (no velocity across the plane)";
-  const std::string name = std::string(face_condition_name(scene.domain_faces[face])) +
+  const std::string name = std::string(scene::face_condition_name(scene.domain_faces[face])) +
                            (scene.axisymmetric && face == 1 ? " (the surface r = R)" : "");
   if (scene.domain_faces[face] == mpm::FaceCondition::free || impulse != mpm::Vector3::Zero() ||
       solver.shared_nodes().partner != nullptr)
@@ -153,6 +149,18 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
   if (!totals.completed)
     j["error"] = totals.error;
   j["particles"] = sample.n_points;
+  if (!solver.mirror_planes().empty())
+  {
+    // The wound figures are the whole scene's (analysis::complete_by_mirrors).
+    nlohmann::json faces = nlohmann::json::array();
+    for (const mpm::SymmetryPlane& plane : solver.mirror_planes())
+      faces.push_back(box_face_name(plane.face));
+    j["symmetry"] = {{"faces", faces},
+                     {"modelled_share", mpm::modelled_share(solver.mirror_planes())},
+                     {"figures", "energies, masses, momenta, forces, impulses and point counts "
+                                 "of the modelled part; wound, cavity and penetration figures "
+                                 "of the whole scene"}};
+  }
   j["mpi"] = {{"ranks", solver.rank_group().size()}, {"bytes_sent", totals.mpi_bytes_sent}};
   j["fe_cells"] = 0;
   j["steps"] = solver.step_count();

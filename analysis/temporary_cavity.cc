@@ -35,7 +35,9 @@ TemporaryCavity::TemporaryCavity(const mpm::Solver& solver)
   solver.rank_group().sum(sums, 4);
   if (!(sums[0] > 0.0))
     return;
-  const mpm::Vector3 centre = mpm::Vector3(sums[1], sums[2], sums[3]) / sums[0];
+  // Across mirror planes the points are the projectile's modelled part; its whole lies on them.
+  const mpm::Vector3 centre =
+    mpm::onto_planes(mpm::Vector3(sums[1], sums[2], sums[3]) / sums[0], solver.mirror_planes());
   const auto [entrance, exit] = solver.target_extent_along_flight();
   thickness = scene.cell_size;
   unsigned int ppc = 1;
@@ -46,7 +48,9 @@ TemporaryCavity::TemporaryCavity(const mpm::Solver& solver)
   // Slices start at the entrance point on the target's surface (for a normal shot half a
   // spacing before the first layer of points, so that no layer lies on a slice boundary).
   origin = centre + (entrance - centre.dot(axis)) * axis;
-  radius_cap = (scene.domain_max - scene.domain_min).norm();
+  mpm::Vector3 domain_min = scene.domain_min, domain_max = scene.domain_max;
+  mpm::mirror_box(domain_min, domain_max, solver.mirror_planes());
+  radius_cap = (domain_max - domain_min).norm();
   const auto n_slices =
       static_cast<std::size_t>(std::ceil((exit - entrance) / thickness - 1e-9));
   slices.resize(std::max<std::size_t>(n_slices, 1));
@@ -96,15 +100,16 @@ void TemporaryCavity::sample(const mpm::Solver& solver)
     if (static_cast<int>(b) == solver.projectile())
       continue;
     for (std::size_t p = points.begin_of(b); p < points.end_of(b); ++p)
+      for (const mpm::Vector3& x : mpm::mirror_images(points.position[p], solver.mirror_planes()))
     {
       for (int d = 0; d < 3; ++d)
       {
-        extent[d] = std::max(extent[d], -points.position[p][d]);
-        extent[3 + d] = std::max(extent[3 + d], points.position[p][d]);
+        extent[d] = std::max(extent[d], -x[d]);
+        extent[3 + d] = std::max(extent[3 + d], x[d]);
       }
       if (points.failure[p] == materials::total_failure)
         continue;
-      const mpm::Vector3 offset = points.position[p] - origin;
+      const mpm::Vector3 offset = x - origin;
       const double along = offset.dot(axis);
       const double first = std::floor((along - reach) / thickness);
       const double last = std::floor((along + reach) / thickness);
@@ -136,8 +141,9 @@ void TemporaryCavity::sample(const mpm::Solver& solver)
   const double time = solver.time();
   const bool first = floor_diameter < 0.0;
   // Beyond a hybrid's MPM points lies the far field's material: no wall is farther than them.
-  std::array<double, sectors> edge = distances_to_the_box(solver.scene().domain_min,
-                                                          solver.scene().domain_max);
+  mpm::Vector3 domain_min = solver.scene().domain_min, domain_max = solver.scene().domain_max;
+  mpm::mirror_box(domain_min, domain_max, solver.mirror_planes());
+  std::array<double, sectors> edge = distances_to_the_box(domain_min, domain_max);
   if (ring_points) // the grid's edge is the radius of its plane
     edge.fill(solver.scene().domain_max[0]);
   if (!solver.scene().deck_bodies.empty())

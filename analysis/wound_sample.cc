@@ -137,6 +137,29 @@ void add_failed_points(WoundSample& sample, const mpm::RankGroup& ranks,
   append_gathered(sample, ranks, std::move(failed));
 }
 
+void complete_by_mirrors(WoundSample& sample, const std::vector<mpm::SymmetryPlane>& planes)
+{
+  if (planes.empty())
+    return;
+  const std::size_t n = sample.failed_position.size();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const mpm::MirrorImages images = mpm::mirror_images(sample.failed_position[i], planes);
+    for (int k = 1; k < images.count; ++k)
+    {
+      sample.failed_position.push_back(images.point[k]);
+      sample.failed_volume.push_back(sample.failed_volume[i]);
+      sample.failed_flag.push_back(sample.failed_flag[i]);
+    }
+  }
+  const double copies = 1.0 / mpm::modelled_share(planes);
+  sample.n_intact = static_cast<std::uint64_t>(std::llround(copies * sample.n_intact));
+  sample.intact_volume *= copies;
+  if (sample.has_target)
+    mpm::mirror_box(sample.target_lower, sample.target_upper, planes);
+  sample.projectile_origin = mpm::onto_planes(sample.projectile_origin, planes);
+}
+
 bool left_through_exit_face(const WoundSample& sample, const mpm::Solver& solver)
 {
   const mpm::ProjectileExit& exit = solver.projectile_exit();

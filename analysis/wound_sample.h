@@ -42,6 +42,12 @@ struct FailedPoint
 void add_failed_points(WoundSample& sample, const mpm::RankGroup& ranks,
                        const std::vector<FailedPoint>& points);
 
+/// On rank 0: the sample of the whole scene from that of the part inside its mirror planes
+/// (mpm/symmetry_planes.h): the failed points with their images, the intact count and volume
+/// and the target's extent likewise, the projectile's origin on the planes. Call it once, after
+/// every point has been added.
+void complete_by_mirrors(WoundSample& sample, const std::vector<mpm::SymmetryPlane>& planes);
+
 /// Whether the projectile left the target through the exit face of its path: its exit was
 /// recorded with its mass centre beyond that face's plane (a ricochet or a sideways exit is
 /// not one).

@@ -250,8 +250,16 @@ void check_bodies(const mpm::SceneParameters& scene, Checker& check)
       const double tolerance = 1e-9 * (scene.domain_max - scene.domain_min).norm();
       bool inside = true;
       for (unsigned int d = 0; d < 3; ++d)
-        inside = inside && lower[d] >= scene.domain_min[d] - tolerance &&
-                 upper[d] <= scene.domain_max[d] + tolerance;
+      {
+        // A body may reach across a mirror plane (deck/symmetry_checks.h), not lie beyond it.
+        const bool lower_mirror = scene.domain_faces[2 * d] == mpm::FaceCondition::symmetry;
+        const bool upper_mirror = scene.domain_faces[2 * d + 1] == mpm::FaceCondition::symmetry;
+        inside = inside &&
+                 (lower[d] >= scene.domain_min[d] - tolerance ||
+                  (lower_mirror && upper[d] > scene.domain_min[d] + tolerance)) &&
+                 (upper[d] <= scene.domain_max[d] + tolerance ||
+                  (upper_mirror && lower[d] < scene.domain_max[d] - tolerance));
+      }
       check.require(inside, section + (body.shape == mpm::BodyShape::box ? "Box min" : "Center"),
                     "the body (bounding box " + point(lower) + " to " + point(upper) +
                         ") is not inside the grid domain " + point(scene.domain_min) + " to " +

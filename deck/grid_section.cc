@@ -14,6 +14,8 @@ mpm::FaceCondition face_condition(const std::string& text)
     return mpm::FaceCondition::fixed;
   if (text == "roller")
     return mpm::FaceCondition::roller;
+  if (text == "symmetry")
+    return mpm::FaceCondition::symmetry;
   return mpm::FaceCondition::free;
 }
 } // namespace
@@ -118,9 +120,11 @@ void declare_grid_section(EntryTable& table)
   {
     const bool side = face < 2 || face > 3;
     table.declare(face_names[face], side ? "fixed" : "free",
-                  Patterns::Selection("free|fixed|roller"),
+                  Patterns::Selection("free|fixed|roller|symmetry"),
                   std::string("Condition on the domain face ") + face_names[face] +
-                      ": free, fixed (zero velocity) or roller (zero normal velocity). The paper "
+                      ": free, fixed (zero velocity), roller (zero normal velocity) or symmetry "
+                      "(a mirror plane of the scene: zero normal velocity, and bodies may cross "
+                      "it, their part inside the domain modelled; docs/symmetry.md). The paper "
                       "fixes the x and z faces and leaves the y faces free.");
   }
   table.leave();

@@ -14,6 +14,7 @@ FaceParameters::Condition fe_condition(const scene::FaceCondition support)
   case scene::FaceCondition::fixed:
     return FaceParameters::Condition::fixed;
   case scene::FaceCondition::roller:
+  case scene::FaceCondition::symmetry:
     return FaceParameters::Condition::roller;
   case scene::FaceCondition::free:
     break;

@@ -3,6 +3,7 @@
 
 #include "materials/fiber_field.h"
 #include "mpm/axisymmetry.h"
+#include "mpm/symmetry_planes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -146,12 +147,20 @@ AxisLattice axis_lattice(const Grid& grid, const int axis, const double lower, c
 }
 
 /// Calls f(x, volume) for each lattice point of `body` (n per cell and axis, at sub-cell
-/// centres). On an axisymmetric grid the lattice is the r-y plane's (z = 0, r > 0) and each
-/// point the ring it sweeps about the axis.
-template <class F> void for_each_point_of(const BodyParameters& body, const Grid& grid, F&& f)
+/// centres) on the domain's side of the mirror planes. On an axisymmetric grid the lattice is
+/// the r-y plane's (z = 0, r > 0) and each point the ring it sweeps about the axis.
+template <class F>
+void for_each_point_of(const BodyParameters& body, const Grid& grid,
+                       const std::vector<SymmetryPlane>& planes, F&& f)
 {
   Vector3 lower = Vector3::Zero(), upper = Vector3::Zero();
   body_bounding_box(body, lower, upper);
+  for (const SymmetryPlane& plane : planes)
+  {
+    double& bound = plane.face % 2 == 0 ? lower[plane.axis] : upper[plane.axis];
+    bound = plane.face % 2 == 0 ? std::max(bound, plane.coordinate)
+                                : std::min(bound, plane.coordinate);
+  }
   std::array<AxisLattice, 3> axis;
   for (int d = 0; d < 3; ++d)
     axis[d] = axis_lattice(grid, d, lower[d], upper[d], body.particles_per_cell);
@@ -181,8 +190,9 @@ template <class F> void for_each_point_of(const BodyParameters& body, const Grid
 void visit_body_points(const SceneParameters& scene, const Grid& grid,
                        const std::function<void(const Vector3&)>& visit)
 {
+  const std::vector<SymmetryPlane> planes = symmetry_planes(scene);
   for (const BodyParameters& body : scene.bodies)
-    for_each_point_of(body, grid, [&](const Vector3& x, double) { visit(x); });
+    for_each_point_of(body, grid, planes, [&](const Vector3& x, double) { visit(x); });
 }
 
 void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& particles,
@@ -194,8 +204,9 @@ void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& par
   // Counted first so that every array is allocated once (growing them by doubling would
   // leave the old copies in the resident set).
   std::size_t n_stored = particles.size(), n_plastic = particles.plastic_pool.size();
+  const std::vector<SymmetryPlane> planes = symmetry_planes(scene);
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
-    for_each_point_of(scene.bodies[b], grid, [&](const Vector3& x, double) {
+    for_each_point_of(scene.bodies[b], grid, planes, [&](const Vector3& x, double) {
       const bool stored = !keep || keep(x);
       n_stored += stored;
       n_plastic += stored && plastic(b);
@@ -207,7 +218,7 @@ void build_bodies(const SceneParameters& scene, const Grid& grid, Particles& par
     const BodyParameters& body = scene.bodies[b];
     particles.start_body();
     const std::uint32_t first_id = next_id;
-    for_each_point_of(body, grid, [&](const Vector3& x, const double volume) {
+    for_each_point_of(body, grid, planes, [&](const Vector3& x, const double volume) {
       const std::uint32_t id = next_id++;
       if (keep && !keep(x))
         return;

@@ -32,7 +32,7 @@ void apply_face_conditions(const Grid& grid, const FaceConditions& faces, const 
       velocity.setZero();
       return;
     }
-    if (c == FaceCondition::roller)
+    if (c == FaceCondition::roller || c == FaceCondition::symmetry)
       velocity[d] = 0.0;
   }
 }
@@ -51,7 +51,7 @@ void apply_face_conditions(const Grid& grid, const FaceConditions& faces, const 
     if (!on_lower && !on_upper)
       continue;
     const int face = on_lower ? 2 * d : 2 * d + 1;
-    if (faces[face] == FaceCondition::fixed || faces[face] == FaceCondition::roller)
+    if (faces[face] != FaceCondition::free)
       face_on_axis[d] = face;
     if (faces[face] == FaceCondition::fixed && first_fixed < 0)
       first_fixed = face;

@@ -29,6 +29,15 @@ Solver::Solver(const SceneParameters& deck, const MPI_Comm communicator)
                         scene.cell_volume_from_grid_flux || ranks.distributed()))
     throw std::invalid_argument("a graded grid (Grid/Grading) takes linear shape functions, no "
                                 "grid flux averaging and one MPI rank");
+  planes_of_symmetry = symmetry_planes(deck);
+  if (!planes_of_symmetry.empty() &&
+      (scene.axisymmetric || scene.shape_function != ShapeFunction::linear))
+    throw std::invalid_argument("a symmetry face (Grid/Boundary conditions) takes a 3D grid and "
+                                "linear shape functions, whose points reach no node beyond it");
+  if (!planes_of_symmetry.empty() && (scene.velocity_transfer == VelocityTransfer::xpic ||
+                                      scene.velocity_transfer == VelocityTransfer::fmpm))
+    throw std::invalid_argument("a symmetry face (Grid/Boundary conditions) does not take XPIC or "
+                                "FMPM, whose grid series would reach beyond it");
   if (scene.axisymmetric && revolved(scene.gravity) != scene.gravity)
     throw std::invalid_argument("an axisymmetric scene's gravity must be along the axis y");
   const std::size_t n_bodies = scene.bodies.size();
@@ -176,6 +185,9 @@ void Solver::plan_projectile_subcycle()
   stages.stress.body_material = {materials_of_body[b]};
   stages.stress.body_density = {parameters.bodies[b].density};
   stages.musl = parameters.update_scheme == UpdateScheme::musl;
+  if (!planes_of_symmetry.empty())
+    throw std::invalid_argument("a symmetry face (Grid/Boundary conditions) does not take a "
+                                "subcycled projectile, whose own scatter it does not mirror");
   subcycle = std::make_unique<ProjectileSubcycle>(grid, stages);
   grid_settings.subcycled_body = b;
   kinematics.body_advanced_elsewhere.assign(particles.n_bodies(), 0);
@@ -356,6 +368,14 @@ void Solver::advance(const double cap)
   if (grid_settings.hold_compressed_surfaces)
     scatter_nodal_stress(particles, grid, transfer, buffers, fields);
   sum_node_data_with_neighbours();
+  if (!planes_of_symmetry.empty())
+  {
+    std::vector<double> flip = kinematics.body_flip_fraction;
+    if (flip.empty())
+      flip.assign(particles.n_bodies(), kinematics.flip_fraction);
+    const MirrorStep mirror{dt, &flip, &grid_settings.body_is_rigid, &grid_settings.owns_node};
+    mirror_nodal_sums(grid, planes_of_symmetry, mirror, fields, support_impulse_here);
+  }
   lap(timings.particle_to_grid);
 
   grid_settings.time_step = dt;
@@ -466,6 +486,15 @@ void Solver::advance(const double cap)
     {
       if (body_mass[b] > 0.0)
         grid_settings.rigid_velocity[b] += dt * grid_result.contact_force[b] / body_mass[b];
+      // A body across a mirror plane moves along it: the plane takes the force across it.
+      for (const SymmetryPlane& plane : planes_of_symmetry)
+        if (crosses(parameters.bodies[b], plane))
+        {
+          if (ranks.rank() == 0)
+            support_impulse_here[plane.face][plane.axis] -=
+              dt * grid_result.contact_force[b][plane.axis];
+          grid_settings.rigid_velocity[b][plane.axis] = 0.0;
+        }
       if (static_cast<int>(b) == held)
         grid_settings.rigid_velocity[b] += dt * parameters.gravity;
       kinematics.rigid_velocity[b] = grid_settings.rigid_velocity[b];
@@ -716,7 +745,7 @@ RunFailure Solver::rigid_face_problem() const
           continue;
         std::ostringstream s;
         s << "rigid body '" << parameters.bodies[b].name << "' reached the "
-          << (parameters.domain_faces[face] == FaceCondition::fixed ? "fixed" : "roller") << " "
+          << scene::face_condition_name(parameters.domain_faces[face]) << " "
           << face_names[face] << " face of the domain at step " << n_steps << ", t = "
           << current_time << " s, " << describe_point(p)
           << "; rigid bodies do not obey face conditions, so it would pass through";

@@ -24,6 +24,7 @@
 #include "mpm/scene_parameters.h"
 #include "mpm/slab_partition.h"
 #include "mpm/stress_update.h"
+#include "mpm/symmetry_planes.h"
 #include "mpm/transfer_settings.h"
 
 #include <array>
@@ -159,6 +160,9 @@ public:
   double expected_end_time() const;
   /// Index of the projectile body, or -1.
   int projectile() const { return projectile_body; }
+  /// The domain faces that are mirror planes of the scene (Grid/Boundary conditions =
+  /// symmetry); the solver models the part of the scene inside them.
+  const std::vector<SymmetryPlane>& mirror_planes() const { return planes_of_symmetry; }
   /// Axis of the projectile's flight (unit), or +y when there is no projectile.
   const Vector3& flight_direction() const { return flight_axis; }
   /// Where the projectile's path (the line through its mass centre along its flight) enters
@@ -357,6 +361,7 @@ private:
   VolumeAveraging volume_averaging;      ///< scratch of the cell-averaged volume change
   bool contact_active = false;
   int projectile_body = -1;
+  std::vector<SymmetryPlane> planes_of_symmetry;
   Vector3 flight_axis = Vector3::UnitY();
   double exit_plane = 0.0; ///< x . flight_axis where the path leaves the target's surface
   bool projectile_reached_target = false; ///< a projectile point has been near the target

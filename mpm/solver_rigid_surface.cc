@@ -26,7 +26,8 @@ void Solver::plan_exact_rigid_surfaces()
     if (materials_of_body[b]->is_rigid() && body_mass[b] > 0.0)
     {
       // The body is its shape: its mass too, shared by its points in their proportions.
-      const double exact_mass = body.density * body_volume(body);
+      const double exact_mass =
+        body.density * body_volume(body) * modelled_share(body, planes_of_symmetry);
       const double scale = exact_mass / body_mass[b];
       for (std::size_t p = particles.begin_of(b); p < particles.end_of(b); ++p)
         particles.mass[p] *= scale;

@@ -21,11 +21,29 @@ enum class FaceCondition
 {
   free,
   fixed,
-  roller ///< normal velocity zero, tangential free
+  roller,  ///< normal velocity zero, tangential free
+  symmetry ///< a mirror plane: as roller, and bodies may cross it (the part inside is modelled)
 };
 
 /// Faces in the order x-, x+, y-, y+, z-, z+.
 using FaceConditions = std::array<FaceCondition, 6>;
+
+/// The deck's word for a face condition.
+inline const char* face_condition_name(const FaceCondition c)
+{
+  switch (c)
+  {
+  case FaceCondition::fixed:
+    return "fixed";
+  case FaceCondition::roller:
+    return "roller";
+  case FaceCondition::symmetry:
+    return "symmetry";
+  case FaceCondition::free:
+    break;
+  }
+  return "free";
+}
 
 enum class BodyShape
 {

@@ -84,7 +84,8 @@ void HybridStepper::log_scene(io::RunDirectory& directory) const
     << ", " << fem::integration_description(split.fe) << ", "
     << fem::shock_viscosity_description(split.fe) << "; " << solver.n_interface_nodes()
     << " shared interface nodes, scheme "
-    << scheme_name(split.hybrid.scheme) << ", " << omp_get_max_threads() << " thread(s)";
+    << scheme_name(split.hybrid.scheme) << ", " << omp_get_max_threads() << " thread(s)"
+    << mpm::describe_mirror_planes(solver.mpm().mirror_planes());
   if (split.hybrid.adaptive.enabled)
     o << "; adaptive zone: cells convert at " << split.hybrid.adaptive.threshold
       << " of the failure limits"
@@ -289,6 +290,7 @@ nlohmann::json HybridStepper::summary(const analysis::RunTotals& run) const
   totals.projectile_initial_kinetic_energy = projectile.kinetic_energy;
   analysis::WoundSample wound = analysis::collect_wound_sample(mpm_side); // collective
   add_far_field_failures(wound, solver);                                  // collective
+  analysis::complete_by_mirrors(wound, mpm_side.mirror_planes());
   const mpm::SceneDiagnostics m = mpm_side.diagnostics();
   const fem::FeDiagnostics fe = solver.fe().diagnostics();
   const std::array<mpm::Vector3, 6> supports = mpm_side.support_impulses(); // collective

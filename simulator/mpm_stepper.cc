@@ -121,7 +121,8 @@ void MpmStepper::log_scene(io::RunDirectory& directory) const
   o << ", "
     << mpm::shape_function_name(scene.shape_function)
     << " shape functions, " << (scene.update_scheme == mpm::UpdateScheme::musl ? "MUSL" : "USL")
-    << ", " << omp_get_max_threads() << " thread(s)";
+    << ", " << omp_get_max_threads() << " thread(s)"
+    << mpm::describe_mirror_planes(solver.mirror_planes());
   if (solver.rank_group().distributed())
   {
     o << " on each of " << solver.rank_group().size() << " ranks; slabs along axis "
@@ -224,7 +225,8 @@ nlohmann::json MpmStepper::summary(const analysis::RunTotals& run) const
   analysis::RunTotals totals = run;
   totals.projectile_initial_speed = projectile.speed;
   totals.projectile_initial_kinetic_energy = projectile.kinetic_energy;
-  const analysis::WoundSample wound = analysis::collect_wound_sample(solver); // collective
+  analysis::WoundSample wound = analysis::collect_wound_sample(solver); // collective
+  analysis::complete_by_mirrors(wound, solver.mirror_planes());
   const mpm::SceneDiagnostics final_state = solver.diagnostics();
   const std::array<mpm::Vector3, 6> supports = solver.support_impulses(); // collective
   const mpm::RankGroup& ranks = solver.rank_group();

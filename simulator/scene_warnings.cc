@@ -178,7 +178,7 @@ void warn_about_unreached_faces(const deck::RunParameters& parameters,
       continue;
     std::ostringstream message;
     message << "Grid/Boundary conditions/" << analysis::box_face_name(face) << " = "
-            << (scene.domain_faces[face] == mpm::FaceCondition::fixed ? "fixed" : "roller")
+            << scene::face_condition_name(scene.domain_faces[face])
             << ": no deformable body reaches that face (the nearest, '" << nearest->name
             << "', is " << gap * 1e3 << " mm from it; "
             << (meshed ? "the finite elements take a face's condition only on a body face that "

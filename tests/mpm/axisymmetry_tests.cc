@@ -314,10 +314,7 @@ mpm::SceneParameters ball_into_gel_cylinder(const bool axisymmetric)
   scene.materials.push_back(test::elastic_material("gel", 2e7, 1e5));
   scene.materials.push_back(test::rigid_material("steel"));
   scene.bodies.push_back(cylinder_body("gel", "gel", 0.0, 8e-3, 10e-3, 2));
-  mpm::BodyParameters ball = test::sphere_body("ball", "steel", Vector3(0, -2.6e-3, 0), 2.5e-3, 7800.0, 2);
-  ball.initial_velocity = Vector3(0, 50, 0);
-  ball.is_projectile = true;
-  scene.bodies.push_back(ball);
+  scene.bodies.push_back(test::steel_ball_projectile(Vector3(0, -2.6e-3, 0), 2.5e-3, 50.0));
   scene.contact.friction_coefficient = 0.0;
   scene.contact.exact_rigid_surface = true;
   scene.end_time = 1.5e-4;

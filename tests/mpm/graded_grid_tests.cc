@@ -218,10 +218,7 @@ SceneParameters ball_into_gel(const bool graded)
   gel.density = 1000.0;
   gel.particles_per_cell = 2;
   scene.bodies.push_back(gel);
-  BodyParameters ball = test::sphere_body("ball", "steel", Vector3(0, -2.6e-3, 0), 2.5e-3, 7800.0, 2);
-  ball.initial_velocity = Vector3(0, 50, 0);
-  ball.is_projectile = true;
-  scene.bodies.push_back(ball);
+  scene.bodies.push_back(test::steel_ball_projectile(Vector3(0, -2.6e-3, 0), 2.5e-3, 50.0));
   scene.contact.friction_coefficient = 0.0;
   scene.contact.exact_rigid_surface = true;
   scene.cell_volume_averaging = true;

@@ -186,15 +186,7 @@ mpm::SceneParameters ball_into_gelatin()
   scene.domain_max[1] = 16e-3;
   scene.bodies[0].box_max[1] = 12e-3;
   scene.remove_points_leaving_grid = true; // splash off the entrance face, booked as outflow
-  mpm::NamedMaterial& gelatin = scene.materials[0];
-  gelatin.parameters.model = "elastic plastic";
-  materials::ElasticPlasticParameters& e = gelatin.parameters.elastic_plastic;
-  e.bulk_modulus = 5e6;
-  e.shear_modulus = 0.85e6;
-  e.yield_stress = 0.22e6;
-  e.hardening_modulus = 0.0;
-  e.volumetric_law = materials::VolumetricLawKind::hugoniot;
-  e.failure_plastic_strain = 0.9;
+  scene.materials[0] = test::soft_gelatin(scene.materials[0].name, 0.9);
   scene.bodies[0].density = 1030.0;
   scene.bodies[1].initial_velocity = Vector3(0, 12, 0);
   scene.end_time = 20e-3;

@@ -57,6 +57,30 @@ mpm::BodyParameters sphere_body(const std::string& name, const std::string& mate
   return b;
 }
 
+mpm::NamedMaterial soft_gelatin(const std::string& name, const double failure_plastic_strain)
+{
+  mpm::NamedMaterial gelatin;
+  gelatin.name = name;
+  gelatin.parameters.model = "elastic plastic";
+  materials::ElasticPlasticParameters& e = gelatin.parameters.elastic_plastic;
+  e.bulk_modulus = 5e6;
+  e.shear_modulus = 0.85e6;
+  e.yield_stress = 0.22e6;
+  e.hardening_modulus = 0.0;
+  e.volumetric_law = materials::VolumetricLawKind::hugoniot;
+  e.failure_plastic_strain = failure_plastic_strain;
+  return gelatin;
+}
+
+mpm::BodyParameters steel_ball_projectile(const mpm::Vector3& center, const double radius,
+                                          const double speed)
+{
+  mpm::BodyParameters ball = sphere_body("ball", "steel", center, radius, 7800.0, 2);
+  ball.initial_velocity = mpm::Vector3(0, speed, 0);
+  ball.is_projectile = true;
+  return ball;
+}
+
 mpm::SceneParameters two_gel_spheres(const double density_left, const double density_right,
                                      const mpm::Vector3& velocity_left,
                                      const mpm::Vector3& velocity_right)

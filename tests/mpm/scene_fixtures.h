@@ -24,6 +24,16 @@ mpm::BodyParameters sphere_body(const std::string& name, const std::string& mate
                                 const mpm::Vector3& center, double radius, double density,
                                 unsigned int particles_per_cell);
 
+/// A soft gelatin-like elastic-plastic material: the Hugoniot, Zochowski's shear modulus
+/// (0.85 MPa) and yield stress (0.22 MPa), no hardening, K lowered to 5 MPa so that a test
+/// takes few steps, total failure at the given plastic strain.
+mpm::NamedMaterial soft_gelatin(const std::string& name, double failure_plastic_strain);
+
+/// A rigid steel ball (material "steel", 7800 kg/m^3, 2 points per cell axis), the projectile,
+/// moving along y.
+mpm::BodyParameters steel_ball_projectile(const mpm::Vector3& center, double radius,
+                                          double speed);
+
 /// Two gel spheres (radius 3 mm, K = 1e5 Pa, c1 = 1e4 Pa) 8 mm apart along x in a 24 x 12 x
 /// 12 mm domain, with their densities and initial velocities.
 mpm::SceneParameters two_gel_spheres(double density_left, double density_right,
