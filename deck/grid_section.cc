@@ -6,8 +6,6 @@ namespace vulnus::deck
 {
 namespace
 {
-const char* const face_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
-
 mpm::FaceCondition face_condition(const std::string& text)
 {
   if (text == "fixed")
@@ -119,9 +117,9 @@ void declare_grid_section(EntryTable& table)
   for (unsigned int face = 0; face < 6; ++face)
   {
     const bool side = face < 2 || face > 3;
-    table.declare(face_names[face], side ? "fixed" : "free",
+    table.declare(scene::face_name(face), side ? "fixed" : "free",
                   Patterns::Selection("free|fixed|roller|symmetry"),
-                  std::string("Condition on the domain face ") + face_names[face] +
+                  std::string("Condition on the domain face ") + scene::face_name(face) +
                       ": free, fixed (zero velocity), roller (zero normal velocity) or symmetry "
                       "(a mirror plane of the scene: zero normal velocity, and bodies may cross "
                       "it, their part inside the domain modelled; docs/symmetry.md). The paper "
@@ -177,7 +175,7 @@ void parse_grid_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   scene.remove_points_leaving_grid = prm.get("Points leaving the grid") == "remove";
   prm.enter_subsection("Boundary conditions");
   for (unsigned int face = 0; face < 6; ++face)
-    scene.domain_faces[face] = face_condition(prm.get(face_names[face]));
+    scene.domain_faces[face] = face_condition(prm.get(scene::face_name(face)));
   prm.leave_subsection();
   prm.leave_subsection();
 }

@@ -10,33 +10,16 @@
 #include "mpm/symmetry_planes.h"
 
 #include <cmath>
-#include <sstream>
 
 namespace vulnus::deck
 {
 namespace
 {
-const char* const face_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
-
-std::string number_text(const double x)
-{
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
-std::string point_text(const Eigen::Vector3d& x)
-{
-  std::ostringstream s;
-  s << x[0] << ", " << x[1] << ", " << x[2];
-  return s.str();
-}
-
 /// The numerics whose sums at the plane's nodes its images complete.
 void check_numerics(const RunParameters& p, const int face, Checker& out)
 {
   const mpm::SceneParameters& s = p.scene;
-  const std::string entry = std::string("Grid/Boundary conditions/") + face_names[face];
+  const std::string entry = std::string("Grid/Boundary conditions/") + scene::face_name(face);
   if (s.axisymmetric)
     out.require(false, entry, "symmetry is for a 3D grid (an axisymmetric grid has its own planes)",
                 "set Grid/Dimension = 3, or the face to free, fixed or roller");
@@ -53,13 +36,13 @@ void check_numerics(const RunParameters& p, const int face, Checker& out)
                 "use FLIP, PIC, APIC or a relaxed transfer");
   if (face % 2 == 1 && s.domain_faces[face - 1] == mpm::FaceCondition::symmetry)
     out.require(false, entry,
-                std::string("symmetry on both ") + face_names[face - 1] + " and " +
-                  face_names[face] + " would mirror the scene without end",
+                std::string("symmetry on both ") + scene::face_name(face - 1) + " and " +
+                  scene::face_name(face) + " would mirror the scene without end",
                 "keep one mirror plane per axis");
   if (s.gravity[face / 2] != 0.0)
     out.require(false, "Scene/Gravity",
-                std::string("gravity across the symmetry face ") + face_names[face] +
-                  " is not its own mirror image (got " + point_text(s.gravity) + ")",
+                std::string("gravity across the symmetry face ") + scene::face_name(face) +
+                  " is not its own mirror image (got " + format_point(s.gravity) + ")",
                 "set the face to free, fixed or roller, or turn gravity along the face");
 }
 
@@ -70,7 +53,7 @@ void check_body(const mpm::SceneParameters& s, const mpm::BodyParameters& body,
 {
   const std::string section = "Body " + body.name + "/";
   const int d = plane.axis;
-  const std::string face = face_names[plane.face];
+  const std::string face = scene::face_name(plane.face);
   const bool across = mpm::crosses(body, plane);
   if (across)
   {
@@ -80,9 +63,9 @@ void check_body(const mpm::SceneParameters& s, const mpm::BodyParameters& body,
       const double tolerance = 1e-9 * (s.domain_max - s.domain_min).norm();
       if (std::abs(body.center[d] - plane.coordinate) > tolerance)
         out.require(false, section + "Center",
-                    what + "so its centre must lie on it (at " + number_text(plane.coordinate) +
+                    what + "so its centre must lie on it (at " + format_number(plane.coordinate) +
                       " m along its normal), for its image to be its other half (got " +
-                      point_text(body.center) + ")",
+                      format_point(body.center) + ")",
                     "put the centre on the face, or set the face to free, fixed or roller");
       if (body.shape == mpm::BodyShape::cylinder && std::abs(body.axis[d]) > 1e-12 * body.axis.norm())
         out.require(false, section + "Axis", what + "so its axis must lie in it",
@@ -90,7 +73,7 @@ void check_body(const mpm::SceneParameters& s, const mpm::BodyParameters& body,
     }
     if (body.initial_velocity[d] != 0.0)
       out.require(false, section + "Initial velocity",
-                  what + "so it cannot move across it (got " + point_text(body.initial_velocity) + ")",
+                  what + "so it cannot move across it (got " + format_point(body.initial_velocity) + ")",
                   "give it no velocity component normal to the face");
   }
   const mpm::NamedMaterial* material = scene::find_material(s, body.material);
@@ -120,7 +103,7 @@ void check_body(const mpm::SceneParameters& s, const mpm::BodyParameters& body,
                 "use a constant field, or set the face to free, fixed or roller");
   else if (!in_or_normal)
     out.require(false, section + "Fiber field/Direction",
-                "fibres along " + point_text(fibers.direction) +
+                "fibres along " + format_point(fibers.direction) +
                   " are not their own image in the symmetry face " + face + " (material '" +
                   body.material + "' is anisotropic); fibres in the face or normal to it are",
                 "turn the fibres, or set the face to free, fixed or roller");

@@ -92,10 +92,9 @@ std::string describe_mirror_planes(const std::vector<SymmetryPlane>& planes)
 {
   if (planes.empty())
     return "";
-  static const char* const face_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
   std::string text = "; mirror plane" + std::string(planes.size() > 1 ? "s " : " ");
   for (std::size_t i = 0; i < planes.size(); ++i)
-    text += (i > 0 ? ", " : "") + std::string(face_names[planes[i].face]);
+    text += (i > 0 ? ", " : "") + std::string(scene::face_name(planes[i].face));
   text += ": the run models 1/" + std::to_string(1u << planes.size()) +
           " of the scene (its energies, forces and impulses are that part's; the wound, "
           "cavity and depth are the whole scene's)";
@@ -103,8 +102,8 @@ std::string describe_mirror_planes(const std::vector<SymmetryPlane>& planes)
 }
 
 void mirror_nodal_sums(const Grid& grid, const std::vector<SymmetryPlane>& planes,
-                       const MirrorStep& step, GridFields& fields,
-                       std::array<Vector3, 6>& impulse)
+                       const GridUpdateSettings& step, const KinematicsSettings& kinematics,
+                       GridFields& fields, std::array<Vector3, 6>& impulse)
 {
   if (planes.empty())
     return;
@@ -124,7 +123,7 @@ void mirror_nodal_sums(const Grid& grid, const std::vector<SymmetryPlane>& plane
     for (long s = 0; s < n; ++s)
     {
       const std::array<int, 3> ijk = grid.node_ijk(keys[s]);
-      const bool owned = step.owns_node == nullptr || !*step.owns_node || (*step.owns_node)(keys[s]);
+      const bool owned = !step.owns_node || step.owns_node(keys[s]);
       for (const SymmetryPlane& plane : planes)
       {
         const int d = plane.axis;
@@ -134,10 +133,11 @@ void mirror_nodal_sums(const Grid& grid, const std::vector<SymmetryPlane>& plane
         for (std::size_t b = 0; b < n_bodies; ++b)
         {
           NodeBodyData& node = fields.data[s * n_bodies + b];
-          const bool rigid = step.body_is_rigid != nullptr && (*step.body_is_rigid)[b];
-          if (owned && !rigid)
+          if (owned && !step.body_is_rigid[b])
           {
-            const double flip = step.flip_fraction == nullptr ? 1.0 : (*step.flip_fraction)[b];
+            const double flip = kinematics.body_flip_fraction.empty()
+                                  ? kinematics.flip_fraction
+                                  : kinematics.body_flip_fraction[b];
             mine[plane.face][d] -= step.time_step * node.force[d] + (1.0 - flip) * node.momentum[d];
           }
           node.momentum[d] = 0.0;

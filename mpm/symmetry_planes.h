@@ -5,11 +5,11 @@
 
 #include "mpm/grid.h"
 #include "mpm/grid_fields.h"
+#include "mpm/grid_to_particle.h"
+#include "mpm/grid_update.h"
 #include "mpm/scene_parameters.h"
 
 #include <array>
-#include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -59,16 +59,6 @@ Vector3 onto_planes(Vector3 x, const std::vector<SymmetryPlane>& planes);
 /// empty without planes.
 std::string describe_mirror_planes(const std::vector<SymmetryPlane>& planes);
 
-/// What the mirror pass needs besides the nodal sums: the step, each body's FLIP fraction and
-/// rigidity, and which nodes this rank books (null: all).
-struct MirrorStep
-{
-  double time_step = 0.0;
-  const std::vector<double>* flip_fraction = nullptr; ///< per body
-  const std::vector<char>* body_is_rigid = nullptr;   ///< per body
-  const std::function<bool(std::int64_t)>* owns_node = nullptr;
-};
-
 /// On the nodes of each plane, completes the one-sided sums by their mirror images, as the
 /// whole scene would have them: each body's momentum, force and mass gradient across the plane
 /// cancel, its mass centre lies on the plane, and the shear stresses across it cancel. So the
@@ -76,7 +66,9 @@ struct MirrorStep
 /// what its image gives the modelled part, is added to `impulse[face]`: the force removed over
 /// the step, and the momentum removed for the share of the points' velocity that is not FLIP's
 /// (a FLIP increment does not see v^n; a PIC velocity does).
+/// `step` gives the time step, the rigid bodies and the nodes this rank books; `kinematics`
+/// each body's FLIP fraction.
 void mirror_nodal_sums(const Grid& grid, const std::vector<SymmetryPlane>& planes,
-                       const MirrorStep& step, GridFields& fields,
-                       std::array<Vector3, 6>& impulse);
+                       const GridUpdateSettings& step, const KinematicsSettings& kinematics,
+                       GridFields& fields, std::array<Vector3, 6>& impulse);
 } // namespace vulnus::mpm

@@ -28,6 +28,13 @@ enum class FaceCondition
 /// Faces in the order x-, x+, y-, y+, z-, z+.
 using FaceConditions = std::array<FaceCondition, 6>;
 
+/// A domain face's name: x-, x+, y-, y+, z-, z+ for 0..5.
+inline const char* face_name(const int face)
+{
+  static const char* const names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+  return names[face];
+}
+
 /// The deck's word for a face condition.
 inline const char* face_condition_name(const FaceCondition c)
 {
