@@ -286,6 +286,7 @@ nlohmann::json mpm_summary(const mpm::Solver& solver, const RunTotals& totals,
                  {"work_prescribed_J", solver.prescribed_work()},
                  {"balance_error", mpm_balance_error(solver, d)}};
   j["removed_points"] = solver.removed_points();
+  j["split_points"] = solver.split_points();
   j["momentum_audit"] = momentum_audit_json(mpm_momentum_audit(solver, d, supports));
   j["warnings"] = totals.warnings;
   return j;

@@ -149,6 +149,7 @@ void HybridSolver::grow_zone(const std::array<double, 3>& new_min,
     for (unsigned int a = 0; a < 3; ++a)
       for (unsigned int b = 0; b < 3; ++b)
         added.deformation_gradient[i](a, b) = p.deformation_gradient[a][b];
+    added.domain[i] = (added.deformation_gradient[i] * added.domain[i].cast<double>()).cast<float>();
     added.failure[i] = p.state.failure;
     if (materials::PlasticHistory* history = added.plastic_of(i))
       *history = p.state.plastic;

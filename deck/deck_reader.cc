@@ -5,6 +5,7 @@
 #include "deck/deck_checks.h"
 #include "deck/axisymmetric_checks.h"
 #include "deck/graded_grid_checks.h"
+#include "deck/point_splitting_checks.h"
 #include "deck/symmetry_checks.h"
 #include "deck/method_checks.h"
 #include "deck/deck_entries.h"
@@ -398,6 +399,8 @@ RunParameters read_run_parameters_from_text(const std::string& text, const std::
   for (const std::string& p : check_symmetry(parameters, EntryLocator(indices)))
     problems.push_back(p);
   for (const std::string& p : check_graded_grid(parameters, EntryLocator(indices)))
+    problems.push_back(p);
+  for (const std::string& p : check_point_splitting(parameters, EntryLocator(indices)))
     problems.push_back(p);
   if (!problems.empty())
     throw DeckError(problems);

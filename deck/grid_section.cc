@@ -96,6 +96,15 @@ void declare_grid_section(EntryTable& table)
                 "stop: a point leaving the grid ends the run as a blow-up (last good state "
                 "kept); remove: it is removed and its energy and momentum booked as outflow "
                 "(fragments flying off the exit face).");
+  table.declare("Point splitting", "0", Patterns::Double(0.0, 8.0),
+                "A deformable body's point splits in two, each half of it, once an edge of its "
+                "domain (a cube of its volume at seeding, deformed with the material since) is "
+                "longer than this many cells [cells]; 0 (the default): never. In 3D, tissue "
+                "flowing around a projectile is drawn apart along the hoop direction too, and "
+                "two points per cell axis then sample it too coarsely; 0.75 splits points "
+                "seeded 2 per cell axis where the material stretched by half "
+                "(docs/point_splitting.md). 3D grid, linear shape functions; above every "
+                "deformable body's seeding (1 / Particles per cell).");
   table.enter("Grading");
   table.declare("Largest cell", "1", Patterns::Double(1.0, 64.0),
                 "The widest cell of a graded grid, in cells of Cell size [-]; 1 (the default) "
@@ -173,6 +182,7 @@ void parse_grid_section(dealii::ParameterHandler& prm, mpm::SceneParameters& sce
   scene.cell_volume_averaging = averaging != "none";
   scene.cell_volume_from_grid_flux = averaging == "grid flux";
   scene.remove_points_leaving_grid = prm.get("Points leaving the grid") == "remove";
+  scene.point_split_edge_cells = prm.get_double("Point splitting");
   prm.enter_subsection("Boundary conditions");
   for (unsigned int face = 0; face < 6; ++face)
     scene.domain_faces[face] = face_condition(prm.get(scene::face_name(face)));

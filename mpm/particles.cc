@@ -1,6 +1,8 @@
 // Particle arrays: appending and reordering.
 #include "mpm/particles.h"
 
+#include <cmath>
+
 namespace vulnus::mpm
 {
 void Particles::reserve(const std::size_t n, const std::size_t n_plastic)
@@ -32,6 +34,7 @@ void Particles::append(const Vector3& x, const Vector3& v, const double m, const
   energy_density.push_back(0.0);
   dissipated_density.push_back(0.0);
   wave_speed.push_back(0.0);
+  domain.push_back(Eigen::Matrix3f::Identity() * static_cast<float>(0.5 * std::cbrt(volume)));
 }
 
 Particles Particles::copy_of_range(const std::size_t begin, const std::size_t end) const

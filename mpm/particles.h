@@ -60,6 +60,10 @@ struct Particles
   std::vector<double> dissipated_density;  ///< accumulated J per reference m^3
   std::vector<double> wave_speed;          ///< m/s, from the last stress update
   std::vector<std::uint32_t> id;           ///< stable identifier, survives sorting
+  /// Half-edge vectors of the point's domain, m, as columns: a cube of the point's volume at
+  /// seeding, moved with each step's velocity gradient since (debris included), halved along
+  /// the edge a split cuts (mpm/point_splitting.h). Single precision: it only decides splits.
+  std::vector<Eigen::Matrix3f> domain;
   /// Not per point: the histories plastic_slot refers to, in no particular order; entries of
   /// points that left stay until the next compaction (permute, keep_only).
   std::vector<materials::PlasticHistory> plastic_pool;
@@ -155,7 +159,7 @@ private:
                            &Particles::reference_volume, &Particles::fiber_direction,
                            &Particles::failure, &Particles::plastic_slot,
                            &Particles::energy_density, &Particles::dissipated_density,
-                           &Particles::wave_speed, &Particles::id);
+                           &Particles::wave_speed, &Particles::id, &Particles::domain);
   }
 };
 } // namespace vulnus::mpm

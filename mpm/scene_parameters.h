@@ -143,6 +143,9 @@ struct SceneParameters : scene::SceneDescription
   /// Points that leave the grid: removed (their energy and momentum booked as outflow) or,
   /// when false, the run stops as a blow-up.
   bool remove_points_leaving_grid = false;
+  /// A deformable body's point splits in two once an edge of its domain is longer than this
+  /// many cells (mpm/point_splitting.h); 0: never.
+  double point_split_edge_cells = 0.0;
   /// The scene turns about the y axis (x = z = 0) and is solved in its r-y half plane
   /// (mpm/axisymmetry.h): points are rings, the grid one cell thick.
   bool axisymmetric = false;

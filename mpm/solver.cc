@@ -38,6 +38,7 @@ Solver::Solver(const SceneParameters& deck, const MPI_Comm communicator)
                                       scene.velocity_transfer == VelocityTransfer::fmpm))
     throw std::invalid_argument("a symmetry face (Grid/Boundary conditions) does not take XPIC or "
                                 "FMPM, whose grid series would reach beyond it");
+  plan_point_splitting();
   if (scene.axisymmetric && revolved(scene.gravity) != scene.gravity)
     throw std::invalid_argument("an axisymmetric scene's gravity must be along the axis y");
   const std::size_t n_bodies = scene.bodies.size();
@@ -517,6 +518,8 @@ void Solver::advance(const double cap)
   if (parameters.remove_points_leaving_grid)
     remove_points_outside_grid();
   check_state();
+  if (splitting.longest_edge > 0.0)
+    split_stretched_points();
   if (parameters.sort_interval > 0 && n_steps % parameters.sort_interval == 0)
   {
     rebalance_slabs(); // re-cuts the slabs and migrates

@@ -17,6 +17,7 @@
 #include "mpm/nonlocal_failure.h"
 #include "mpm/particle_to_grid.h"
 #include "mpm/particles.h"
+#include "mpm/point_splitting.h"
 #include "mpm/projectile_penetration.h"
 #include "mpm/projectile_subcycle.h"
 #include "mpm/rank_group.h"
@@ -125,6 +126,8 @@ public:
   /// law at their F (their histories unchanged), and move to the ranks whose slabs hold
   /// them. Returns their kinetic plus stored energy, J, over all ranks.
   double add_points(std::size_t b, Particles added);
+  /// Points made by splitting stretched points (mpm/point_splitting.h), all ranks.
+  std::size_t split_points() const { return n_split; }
 
   /// True when the end time is reached or the projectile's tail has left the targets.
   /// Collective.
@@ -323,6 +326,12 @@ private:
   /// the series from v^(n+1) instead, less v^(n+1) (mpm/xpic.h).
   void compute_xpic_correction();
   void remove_points_outside_grid();
+  /// Point splitting's limit, box, planes and rigid bodies; refuses what cannot split.
+  void plan_point_splitting();
+  /// Collective: splits the deformable bodies' points stretched beyond splitting's limit.
+  void split_stretched_points();
+  /// Collective: gives the points of `added` ids after the largest in use, rank by rank.
+  void assign_fresh_ids(Particles& added);
   std::string describe_point(std::size_t p) const;
 
   SceneParameters parameters;
@@ -381,6 +390,8 @@ private:
   Vector3 accumulated_added_momentum = Vector3::Zero();   ///< same on every rank
   PhaseTimes timings;
   std::size_t n_removed = 0;
+  PointSplitting splitting; ///< longest_edge 0: off
+  std::size_t n_split = 0;  ///< same on every rank
   std::size_t n_active_last_step = 0;
   double outflow_energy = 0.0;
   Vector3 outflow_momentum = Vector3::Zero();

@@ -7,7 +7,7 @@
 
 namespace vulnus::mpm
 {
-double Solver::add_points(const std::size_t b, Particles added)
+void Solver::assign_fresh_ids(Particles& added)
 {
   // Ids continue after the largest in use, rank by rank.
   double largest = -1.0;
@@ -22,7 +22,11 @@ double Solver::add_points(const std::size_t b, Particles added)
     next += counts[static_cast<std::size_t>(r)];
   for (std::uint32_t& id : added.id)
     id = static_cast<std::uint32_t>(next++);
+}
 
+double Solver::add_points(const std::size_t b, Particles added)
+{
+  assign_fresh_ids(added);
   const materials::Material& law = *materials_of_body[b];
   double energy = 0.0, mass = 0.0;
   Vector3 momentum = Vector3::Zero();

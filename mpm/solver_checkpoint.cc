@@ -14,7 +14,7 @@ namespace
 {
 using namespace binary;
 
-constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'D', '1'};
+constexpr char magic[8] = {'V', 'U', 'L', 'N', 'U', 'S', 'D', '2'};
 } // namespace
 
 void Solver::save(std::ostream& out) const
@@ -43,6 +43,7 @@ void Solver::save(std::ostream& out) const
   put(out, accumulated_prescribed_work);
   put(out, accumulated_added_momentum);
   put(out, static_cast<std::uint64_t>(n_removed));
+  put(out, static_cast<std::uint64_t>(n_split));
   put(out, outflow_energy);
   put(out, outflow_momentum);
   std::vector<double> departed_packed; // x, y, z, volume, failure, body
@@ -98,7 +99,7 @@ void Solver::restore(std::istream& in)
   get(in, contact_nodes);
   get(in, active);
   double time = 0, step = 0, contact = 0, supports = 0, energy = 0, outflow = 0;
-  std::uint64_t steps = 0, removed = 0;
+  std::uint64_t steps = 0, removed = 0, split = 0;
   Vector3 outflow_p;
   get(in, time);
   get(in, step);
@@ -113,6 +114,7 @@ void Solver::restore(std::istream& in)
   get(in, prescribed_work);
   get(in, added);
   get(in, removed);
+  get(in, split);
   get(in, outflow);
   get(in, outflow_p);
   std::vector<double> departed_packed;
@@ -195,6 +197,7 @@ void Solver::restore(std::istream& in)
   accumulated_prescribed_work = prescribed_work;
   accumulated_added_momentum = added;
   n_removed = removed;
+  n_split = split;
   body_mass = mass_on_grid;
   outflow_energy = outflow;
   outflow_momentum = outflow_p;

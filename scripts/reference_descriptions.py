@@ -60,6 +60,7 @@ SUMMARY = [
     ("wall_seconds", "s", "Wall-clock time of the run (with the earlier parts of a restarted run)."),
     ("particle_steps_per_second", "1/s", "MPM and hybrid runs: points times steps over `wall_seconds`."),
     ("removed_points", "-", "MPM and hybrid runs: points that left the grid and were removed (`Grid/Points leaving the grid = remove`)."),
+    ("split_points", "-", "MPM and hybrid runs: points made by splitting stretched points (`Grid/Point splitting`; 0 when off)."),
     ("failed", "-", "MPM and hybrid runs: failed points of the target (every body but the projectile) by failure flag, reference configuration."),
     ("failed.matrix", "-", "Points with flag 1 (matrix failed)."),
     ("failed.fiber", "-", "Points with flag 2 (fibers failed)."),

@@ -173,7 +173,8 @@ void MpmStepper::log_scene(io::RunDirectory& directory) const
 
 std::string MpmStepper::progress() const
 {
-  return std::to_string(n_points_at_start - solver.removed_points()) + " points";
+  return std::to_string(n_points_at_start + solver.split_points() - solver.removed_points()) +
+         " points";
 }
 
 double MpmStepper::energy_balance_error() const
