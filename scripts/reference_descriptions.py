@@ -321,7 +321,7 @@ HISTORY = [
     ("failed_fiber", "-", "MPM points with flag 2."),
     ("failed_total", "-", "MPM points with flag 3."),
     ("failed_points", "-", "FE runs: failed quadrature points."),
-    ("bullet_position_<axis>", "m", "The projectile's mass centre (NaN without a projectile)."),
+    ("bullet_position_<axis>", "m", "The projectile's mass centre (NaN without a projectile); with mirror planes through the projectile, the whole projectile's, on the planes."),
     ("bullet_velocity_<axis>", "m/s", "The projectile's mass-averaged velocity (NaN without a projectile)."),
     ("bullet_contact_force_<axis>", "N", "Force the other bodies exerted on the projectile in the last step (NaN without a projectile)."),
     ("contact_nodes", "-", "Grid nodes where bodies met in the last step."),

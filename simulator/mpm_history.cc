@@ -2,6 +2,7 @@
 #include "simulator/mpm_history.h"
 
 #include "analysis/mpm_summary.h"
+#include "mpm/symmetry_planes.h"
 
 #include <cmath>
 
@@ -27,7 +28,13 @@ std::vector<double> mpm_history_row(const mpm::Solver& solver, const mpm::SceneD
   if (solver.projectile() >= 0)
   {
     const mpm::BodySummary& b = d.bodies[solver.projectile()];
-    position = b.centroid;
+    // A mirror plane through the projectile models part of it; the whole one's centre is on
+    // the plane.
+    std::vector<mpm::SymmetryPlane> through;
+    for (const mpm::SymmetryPlane& plane : solver.mirror_planes())
+      if (mpm::crosses(solver.scene().bodies[solver.projectile()], plane))
+        through.push_back(plane);
+    position = mpm::onto_planes(b.centroid, through);
     velocity = b.velocity;
     force = solver.contact_forces().empty() ? mpm::Vector3::Zero()
                                             : solver.contact_forces()[solver.projectile()];

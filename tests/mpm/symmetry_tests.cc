@@ -6,9 +6,11 @@
 #include "mpm/solver.h"
 #include "mpm/symmetry_planes.h"
 #include "scene_fixtures.h"
+#include "simulator/mpm_history.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace vulnus;
@@ -136,4 +138,21 @@ TEST(Symmetry, APointHasItsImagesInEachPlaneAndTheirCombination)
   EXPECT_DOUBLE_EQ(modelled_share(ball, planes), 0.5);
   const BodyParameters box = test::box_body("box", "gel", Vector3(-0.1, 0, 1.5), Vector3(0.3, 1, 2.5), 1.0, 1);
   EXPECT_DOUBLE_EQ(modelled_share(box, planes), 0.75 * 0.5);
+}
+
+TEST(Symmetry, TheHistoryPlacesTheWholeProjectileOnThePlanes)
+{
+  Solver solver(ball_into_block(true));
+  for (int i = 0; i < 5; ++i)
+    solver.advance();
+  const SceneDiagnostics d = solver.diagnostics();
+  const std::vector<std::string> columns = simulator::mpm_history_columns();
+  const std::vector<double> row = simulator::mpm_history_row(solver, d);
+  const auto at = [&](const std::string& name)
+  { return row[std::find(columns.begin(), columns.end(), name) - columns.begin()]; };
+  // The modelled quarter's own centre is off the planes; the whole ball's is on them.
+  EXPECT_GT(d.bodies[1].centroid[0], 5e-4);
+  EXPECT_EQ(at("bullet_position_x"), 0.0);
+  EXPECT_EQ(at("bullet_position_z"), 0.0);
+  EXPECT_EQ(at("bullet_position_y"), d.bodies[1].centroid[1]);
 }
