@@ -32,9 +32,9 @@ std::string broadcast_error(std::string message, const MPI_Comm communicator)
 }
 } // namespace
 
-MeshSeries::MeshSeries(const std::string& directory, const double interval, const double end_time,
+MeshSeries::MeshSeries(const std::string& directory, const double interval,
                        const std::int32_t material_id, const MPI_Comm communicator)
-    : directory(directory), communicator(communicator), schedule(interval, end_time),
+    : directory(directory), communicator(communicator), schedule(interval),
       material_id(material_id)
 {
   if (is_root(communicator))

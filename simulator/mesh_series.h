@@ -20,7 +20,7 @@ class MeshSeries : public Postprocessor
 public:
   /// `material_id`: the body index the far field's tissue has among the particles' bodies.
   /// Collective over `communicator`; rank 0 writes the files.
-  MeshSeries(const std::string& directory, double interval, double end_time,
+  MeshSeries(const std::string& directory, double interval,
              std::int32_t material_id, MPI_Comm communicator);
 
   void start(Stepper& stepper) override;

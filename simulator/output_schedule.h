@@ -2,13 +2,15 @@
 // (interval 0: only the first and the final state).
 #pragma once
 
+#include <limits>
+
 namespace vulnus::simulator
 {
 class OutputSchedule
 {
 public:
-  OutputSchedule(double interval, double end_time)
-      : interval(interval), next(interval > 0 ? interval : 2 * end_time)
+  explicit OutputSchedule(double interval)
+      : interval(interval), next(interval > 0 ? interval : std::numeric_limits<double>::infinity())
   {
   }
 
@@ -16,7 +18,13 @@ public:
   void advance() { next += interval; }
 
   double next_time() const { return next; }
-  void set_next_time(const double t) { next = t; }
+  /// From a checkpoint. Without an interval nothing periodic is due, whatever the checkpoint
+  /// saved (an earlier build saved twice the run's end time, which a longer run reaches).
+  void set_next_time(const double t)
+  {
+    if (interval > 0)
+      next = t;
+  }
 
 private:
   double interval;

@@ -10,9 +10,8 @@
 namespace vulnus::simulator
 {
 ParticleSeries::ParticleSeries(const std::string& directory, const double interval,
-                               const double end_time, const MPI_Comm communicator)
-    : directory(directory), output(directory, "particles", communicator),
-      schedule(interval, end_time)
+                               const MPI_Comm communicator)
+    : directory(directory), output(directory, "particles", communicator), schedule(interval)
 {
 }
 

@@ -15,7 +15,7 @@ class ParticleSeries : public Postprocessor
 {
 public:
   /// Collective over `communicator`: all ranks write their points into one file per time.
-  ParticleSeries(const std::string& directory, double interval, double end_time,
+  ParticleSeries(const std::string& directory, double interval,
                  MPI_Comm communicator);
 
   void start(Stepper& stepper) override;

@@ -43,15 +43,14 @@ std::vector<std::unique_ptr<Postprocessor>> postprocessors_of(Stepper& stepper,
 {
   std::vector<std::unique_ptr<Postprocessor>> list;
   list.push_back(std::make_unique<HistoryWriter>(directory, parameters.output.history_interval));
-  const double end = stepper.end_time();
   if (stepper.mpm_side() != nullptr)
     list.push_back(std::make_unique<ParticleSeries>(
-      directory.path(), parameters.output.particle_interval, end, stepper.communicator()));
+      directory.path(), parameters.output.particle_interval, stepper.communicator()));
   if (stepper.mpm_side() != nullptr)
     list.push_back(std::make_unique<CavityRecorder>());
   if (stepper.fe_side() != nullptr)
     list.push_back(
-      std::make_unique<MeshSeries>(directory.path(), parameters.output.particle_interval, end,
+      std::make_unique<MeshSeries>(directory.path(), parameters.output.particle_interval,
                                    stepper.fe_material_id(), stepper.communicator()));
   return list;
 }
