@@ -173,6 +173,7 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
   const double dt = s.time_step;
   const bool midpoint = s.deformation_update == DeformationUpdate::midpoint;
   const bool affine = s.affine;
+  const bool track_domains = s.track_domains;
   const bool axisymmetric = grid.axisymmetric();
   if (averaging)
     averaging->prepare(grid, particles.size());
@@ -234,10 +235,14 @@ void update_deformation_gradients_and_positions(const Grid& grid, const Transfer
                      particles.affine_velocity[p] = L.cast<float>();
                    if (axisymmetric)
                      L(2, 2) = radial_velocity / x_start[0];
-                   const Tensor2 domain = particles.domain[p].cast<double>();
-                   particles.domain[p] = (midpoint ? midpoint_update((0.5 * dt) * L, domain)
-                                                   : Tensor2((Tensor2::Identity() + dt * L) * domain))
-                                           .cast<float>();
+                   if (track_domains)
+                   {
+                     const Tensor2 domain = particles.domain[p].cast<double>();
+                     particles.domain[p] =
+                       (midpoint ? midpoint_update((0.5 * dt) * L, domain)
+                                 : Tensor2((Tensor2::Identity() + dt * L) * domain))
+                         .cast<float>();
+                   }
                    const bool failed = particles.failure[p] != 0;
                    const bool debris = particles.failure[p] == materials::total_failure;
                    const double J_old =

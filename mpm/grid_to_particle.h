@@ -26,6 +26,8 @@ struct KinematicsSettings
   /// the next scatter; with flip_fraction > 0 the velocity is the FLIP-APIC blend.
   bool affine = false;
   DeformationUpdate deformation_update = DeformationUpdate::midpoint;
+  /// Update each point's domain (Particles::domain) with its F; only point splitting reads it.
+  bool track_domains = false;
   std::vector<char> body_is_rigid;
   std::vector<Vector3> rigid_velocity;
   /// Per body, 1 when another stepper advances its points (a subcycled projectile): they are

@@ -117,6 +117,7 @@ Solver::Solver(const SceneParameters& deck, const MPI_Comm communicator)
   kinematics.affine = transfer.affine;
   kinematics.flip_fraction = scene.velocity_transfer == VelocityTransfer::flip ? 1.0 : 0.0;
   kinematics.deformation_update = scene.deformation_update;
+  kinematics.track_domains = scene.point_split_edge_cells > 0.0;
   kinematics.body_is_rigid = grid_settings.body_is_rigid;
   kinematics.rigid_velocity = grid_settings.rigid_velocity;
 

@@ -138,8 +138,9 @@ SceneParameters ball_into_quarter_block(const double split_cells)
 TEST(PointSplitting, TheDomainFollowsTheMaterialAsFDoes)
 {
   // Without volume averaging a point's domain is F times its seeded cube until it splits or
-  // turns to debris (whose F keeps its volume alone).
-  Solver solver(ball_into_quarter_block(0.0));
+  // turns to debris (whose F keeps its volume alone). A limit of 100 cells tracks the domains
+  // and splits nothing.
+  Solver solver(ball_into_quarter_block(100.0));
   while (!solver.finished())
     solver.advance();
   const Particles& p = solver.points();
@@ -155,6 +156,7 @@ TEST(PointSplitting, TheDomainFollowsTheMaterialAsFDoes)
   }
   EXPECT_GT(compared, 1000u);
   EXPECT_GT(stretched, 10u); // points the next test's limit would split
+  EXPECT_EQ(solver.split_points(), 0u);
 }
 
 TEST(PointSplitting, ARunThatSplitsKeepsItsMassAndMomentumAndFreshIds)
