@@ -88,7 +88,7 @@ void MeshSeries::write(Stepper& stepper)
 
 void MeshSeries::start(Stepper& stepper) { write(stepper); }
 
-void MeshSeries::resume(Stepper&, const io::RunProgress& progress)
+void MeshSeries::resume(Stepper& stepper, const io::RunProgress& progress)
 {
   if (output)
   {
@@ -97,7 +97,7 @@ void MeshSeries::resume(Stepper&, const io::RunProgress& progress)
     last_time = output->last_time();
   }
   MPI_Bcast(&last_time, 1, MPI_DOUBLE, 0, communicator);
-  schedule.set_next_time(progress.next_output);
+  schedule.resume(progress.next_output, stepper.time());
 }
 
 void MeshSeries::save_progress(io::RunProgress& progress) const

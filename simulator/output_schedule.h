@@ -2,6 +2,7 @@
 // (interval 0: only the first and the final state).
 #pragma once
 
+#include <cmath>
 #include <limits>
 
 namespace vulnus::simulator
@@ -18,12 +19,19 @@ public:
   void advance() { next += interval; }
 
   double next_time() const { return next; }
-  /// From a checkpoint. Without an interval nothing periodic is due, whatever the checkpoint
-  /// saved (an earlier build saved twice the run's end time, which a longer run reaches).
-  void set_next_time(const double t)
+  /// On a restart at time `now`, from the next output time the checkpoint saved. Without an
+  /// interval nothing periodic is due, whatever was saved (an earlier build saved twice the
+  /// run's end time, which a longer run reaches). With one, the saved time holds if it is the
+  /// next on this interval; otherwise (the interval changed, or the run had none) the next
+  /// multiple of the interval after `now` is.
+  void resume(const double saved_next, const double now)
   {
-    if (interval > 0)
-      next = t;
+    if (!(interval > 0))
+      return;
+    if (std::isfinite(saved_next) && saved_next > now && saved_next <= now + interval * (1 + 1e-9))
+      next = saved_next;
+    else
+      next = (std::floor(now / interval * (1 + 1e-12)) + 1) * interval;
   }
 
 private:

@@ -28,11 +28,11 @@ void ParticleSeries::write(const Stepper& stepper)
 
 void ParticleSeries::start(Stepper& stepper) { write(stepper); }
 
-void ParticleSeries::resume(Stepper&, const io::RunProgress& progress)
+void ParticleSeries::resume(Stepper& stepper, const io::RunProgress& progress)
 {
   std::istringstream records(progress.output_records);
   output.restore_records(records);
-  schedule.set_next_time(progress.next_output);
+  schedule.resume(progress.next_output, stepper.time());
 }
 
 void ParticleSeries::after_step(Stepper& stepper)
