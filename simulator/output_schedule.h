@@ -20,10 +20,9 @@ public:
 
   double next_time() const { return next; }
   /// On a restart at time `now`, from the next output time the checkpoint saved. Without an
-  /// interval nothing periodic is due, whatever was saved (an earlier build saved twice the
-  /// run's end time, which a longer run reaches). With one, the saved time holds if it is the
-  /// next on this interval; otherwise (the interval changed, or the run had none) the next
-  /// multiple of the interval after `now` is.
+  /// interval nothing periodic is due, whatever the checkpoint holds. With one, the saved time
+  /// holds if it is the next on this interval; otherwise (the interval changed, or the run had
+  /// none) the next multiple of the interval after `now` is.
   void resume(const double saved_next, const double now)
   {
     if (!(interval > 0))
